@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "geometry/camera.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+double ReadNumber(const nlohmann::json& json, const char* key, const std::filesystem::path& path) {
+  if (!json.contains(key)) {
+    throw FormatError("'" + path.string() + "': camera field '" + key + "' is missing");
+  }
+  if (!json[key].is_number()) {
+    throw FormatError("'" + path.string() + "': camera field '" + key + "' is not a number");
+  }
+  return json[key].get<double>();
+}
+
+}  // namespace
+
+void PinholeCamera::Validate() const {
+  const bool finite = std::isfinite(fx) && std::isfinite(fy) && std::isfinite(cx) && std::isfinite(cy);
+  if (!finite) throw Error("camera: intrinsics must be finite numbers");
+  if (fx <= 0.0 || fy <= 0.0) throw Error("camera: focal lengths fx, fy must be positive");
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+    throw Error("camera: image size must be between 1 and 16384 pixels");
+  }
+}
+
+PinholeCamera PinholeCamera::Scaled(double factor) const {
+  PinholeCamera scaled = *this;
+  scaled.fx *= factor;
+  scaled.fy *= factor;
+  // Keep pixel centres consistent: the continuous image coordinate (u + 0.5) scales.
+  scaled.cx = (cx + 0.5) * factor - 0.5;
+  scaled.cy = (cy + 0.5) * factor - 0.5;
+  scaled.width = static_cast<int>(std::lround(width * factor));
+  scaled.height = static_cast<int>(std::lround(height * factor));
+  return scaled;
+}
+
+PinholeCamera LoadCameraJson(const std::filesystem::path& path) {
+  const std::string text = ReadFileBytes(path);
+  nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (json.is_discarded() || !json.is_object()) {
+    throw FormatError("'" + path.string() + "': not a JSON object");
+  }
+  PinholeCamera camera;
+  camera.fx = ReadNumber(json, "fx", path);
+  camera.fy = ReadNumber(json, "fy", path);
+  camera.cx = ReadNumber(json, "cx", path);
+  camera.cy = ReadNumber(json, "cy", path);
+  const double width = ReadNumber(json, "width", path);
+  const double height = ReadNumber(json, "height", path);
+  if (width != std::floor(width) || height != std::floor(height) || width < 1 || height < 1 ||
+      width > 16384 || height > 16384) {
+    throw FormatError("'" + path.string() + "': width and height must be positive integers");
+  }
+  camera.width = static_cast<int>(width);
+  camera.height = static_cast<int>(height);
+  try {
+    camera.Validate();
+  } catch (const Error& error) {
+    throw FormatError("'" + path.string() + "': " + error.what());
+  }
+  return camera;
+}
+
+}  // namespace layermod

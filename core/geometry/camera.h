@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+
+namespace layermod {
+
+// Pinhole camera in pixels; the same model renders templates and describes the sensor.
+// Pixel centres are at integer coordinates: a point projects to (fx*x/z + cx, fy*y/z + cy).
+struct PinholeCamera {
+  double fx = 0.0;
+  double fy = 0.0;
+  double cx = 0.0;
+  double cy = 0.0;
+  int width = 0;
+  int height = 0;
+
+  // Throws Error when a value is missing, non-finite or out of range.
+  void Validate() const;
+
+  Eigen::Vector2d Project(const Eigen::Vector3d& point_in_cam) const {
+    return {fx * point_in_cam.x() / point_in_cam.z() + cx,
+            fy * point_in_cam.y() / point_in_cam.z() + cy};
+  }
+  Eigen::Vector3d Backproject(const Eigen::Vector2d& pixel, double depth_mm) const {
+    return {(pixel.x() - cx) * depth_mm / fx, (pixel.y() - cy) * depth_mm / fy, depth_mm};
+  }
+  // Scales the intrinsics and image size by `factor` (e.g. 0.5 for a pyramid level).
+  PinholeCamera Scaled(double factor) const;
+
+  bool operator==(const PinholeCamera&) const = default;
+};
+
+// Reads a BOP camera file (`fx fy cx cy width height`, `depth_scale` optional). Throws IoError or
+// FormatError naming the file and the missing or invalid field.
+PinholeCamera LoadCameraJson(const std::filesystem::path& path);
+
+}  // namespace layermod

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/pose.h"
+
+namespace layermod {
+
+// An inclusive angle grid `min:step:max` in degrees.
+struct AngleRange {
+  double min_deg = 0.0;
+  double step_deg = 1.0;
+  double max_deg = 0.0;
+
+  void Validate(std::string_view name) const;  // throws Error naming the range
+  std::vector<double> Values() const;
+  std::string ToString() const;                // "min:step:max"
+  static AngleRange Parse(std::string_view text, std::string_view name);  // throws Error
+  bool operator==(const AngleRange&) const = default;
+};
+
+// Viewpoint on the sphere around the object: the camera sits at azimuth/elevation (object +Z up,
+// elevation measured from the object's XY plane), looks at the sphere centre, and is rolled about
+// its optical axis.
+struct ViewAngles {
+  double azimuth_deg = 0.0;
+  double elevation_deg = 0.0;
+  double roll_deg = 0.0;
+};
+
+struct ViewSamplingOptions {
+  AngleRange azimuth{0.0, 15.0, 345.0};
+  AngleRange elevation{0.0, 15.0, 75.0};
+  AngleRange roll{-45.0, 15.0, 45.0};
+  // When > 0: sample camera directions evenly on the view sphere (Fibonacci lattice) with about
+  // this angular spacing, limited to the elevation range, instead of the azimuth/elevation grid.
+  double even_spacing_deg = 0.0;
+
+  void Validate() const;
+  bool operator==(const ViewSamplingOptions&) const = default;
+};
+
+std::vector<ViewAngles> SampleViews(const ViewSamplingOptions& options);
+
+// Camera pose that sees the sphere centre `centre_in_model` at distance `distance_mm` on the
+// optical axis, from `view`. Image "up" follows the object's +Z, then `roll_deg` is applied.
+Pose CamFromModelForView(const ViewAngles& view, const Eigen::Vector3d& centre_in_model,
+                         double distance_mm);
+
+// Depth layers covering [min_mm, max_mm] with a step of at most `step_mm` (the sphere radius, paper
+// §3.1), so that no depth of the range is farther than step_mm / 2 from a layer. Throws Error on
+// an empty or invalid range.
+std::vector<double> DepthLayers(double min_mm, double max_mm, double step_mm);
+
+}  // namespace layermod

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geometry/sphere.h"
+#include "mesh/render_mesh.h"
+#include "geometry/units.h"
+
+namespace layermod {
+
+struct MeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+  using Color = OpenMesh::Vec3uc;
+  VertexAttributes(OpenMesh::Attributes::Normal | OpenMesh::Attributes::Color);
+  FaceAttributes(OpenMesh::Attributes::Normal);
+};
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
+
+struct LoadModelOptions {
+  LengthUnit units = LengthUnit::kMillimetre;  // units of the file; converted to mm on load
+};
+
+// A cleaned CAD model in millimetres with its circumscribing sphere.
+struct Model {
+  TriMesh mesh;
+  std::filesystem::path source;
+  std::string hash;          // hex digest of the source file bytes
+  LengthUnit source_units = LengthUnit::kMillimetre;
+  bool has_vertex_colors = false;
+  Sphere sphere;             // exact minimal enclosing sphere of the vertices (mm)
+  Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bbox_max = Eigen::Vector3d::Zero();
+  std::vector<std::string> warnings;  // origin far from centre, metre-scale guess, ...
+
+  double DiameterMm() const { return 2.0 * sphere.radius; }
+};
+
+// Loads any mesh assimp reads (PLY, STL, OBJ, OFF, glTF, ...), keeps vertex colours, merges
+// duplicate vertices, drops degenerate faces, computes normals, converts to mm and computes the
+// sphere. Throws IoError (missing/unreadable) or FormatError (unsupported, empty, non-finite,
+// degenerate) naming the file.
+Model LoadModel(const std::filesystem::path& path, const LoadModelOptions& options = {});
+
+// Distance from the model origin to the sphere centre above which a warning is issued, as a
+// fraction of the radius.
+inline constexpr double kOriginWarningFraction = 0.25;
+bool OriginFarFromCentre(const Model& model);
+
+// Moves the model so that the sphere centre becomes the origin.
+void RecentreOnSphere(Model& model);
+
+// Flat copy for the rasterizer (grey where the mesh has no colours).
+RenderMesh ToRenderMesh(const Model& model);
+
+// Writes the model as binary PLY with vertex colours (mm). Atomic. Throws IoError.
+void SaveModelPly(const std::filesystem::path& path, const TriMesh& mesh);
+
+}  // namespace layermod

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geometry/camera.h"
+#include "geometry/sphere.h"
+#include "templates/template_record.h"
+#include "templates/training_profile.h"
+
+namespace layermod {
+
+inline constexpr int kArchiveFormatVersion = 1;
+
+// One object of an archive.
+struct ArchiveObject {
+  std::int32_t obj_id = 0;
+  std::string name;
+  std::string mesh_file;    // file name the object was trained from (no directory)
+  std::string mesh_hash;    // hex digest of the mesh file bytes
+  std::string units = "mm"; // units of the source mesh before conversion to mm
+  Sphere sphere;            // circumscribing sphere in model mm
+  double diameter_mm = 0.0; // 2 * sphere.radius
+  Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bbox_size = Eigen::Vector3d::Zero();
+  std::vector<double> layer_depths_mm;  // layer_index -> depth
+  TrainingProfile profile;
+};
+
+// The readable manifest of a *.layermod file.
+struct ArchiveManifest {
+  int format_version = kArchiveFormatVersion;
+  std::string tool_version;
+  std::string created_utc;  // ISO 8601
+  PinholeCamera camera;     // every template was rendered with this camera
+  std::vector<ArchiveObject> objects;
+};
+
+// A loaded (or freshly trained) template set. Templates are stored in id order; records of one
+// object and layer are contiguous, so queries return spans without copying.
+class TemplateArchive {
+ public:
+  TemplateArchive() = default;
+  TemplateArchive(ArchiveManifest manifest, std::vector<TemplateRecord> templates);
+
+  const ArchiveManifest& manifest() const { return manifest_; }
+  const std::vector<TemplateRecord>& templates() const { return templates_; }
+  const PinholeCamera& camera() const { return manifest_.camera; }
+
+  const ArchiveObject& Object(std::int32_t obj_id) const;  // throws Error if absent
+  std::span<const TemplateRecord> TemplatesOf(std::int32_t obj_id) const;
+  std::span<const TemplateRecord> TemplatesOf(std::int32_t obj_id, int layer_index) const;
+
+ private:
+  void BuildIndex();  // throws FormatError if records are not grouped by object and layer
+
+  ArchiveManifest manifest_;
+  std::vector<TemplateRecord> templates_;
+  struct Range {
+    std::int32_t obj_id;
+    int layer_index;  // -1: the whole object
+    std::size_t begin;
+    std::size_t end;
+  };
+  std::vector<Range> index_;
+};
+
+// Writes `archive` to `path` atomically (temporary file + rename). Throws IoError.
+void WriteArchive(const std::filesystem::path& path, const TemplateArchive& archive);
+
+// Reads and validates a *.layermod file (magic, version, sizes, checksums, value ranges).
+// Throws IoError / FormatError naming the file and the problem; never crashes on bad bytes.
+TemplateArchive ReadArchive(const std::filesystem::path& path);
+
+// The same from bytes already in memory (`name` is used in messages). For tests and fuzzing.
+TemplateArchive ReadArchiveBytes(std::string_view bytes, const std::string& name);
+
+}  // namespace layermod

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+
+#include "features/feature_options.h"
+#include "geometry/views.h"
+
+namespace layermod {
+
+// Everything that decides which templates are trained. One struct feeds the CLI flags, the
+// studio's form, the saved profile file and the archive's manifest.
+struct TrainingProfile {
+  double depth_min_mm = 500.0;
+  double depth_max_mm = 1500.0;
+  ViewSamplingOptions views = DefaultEnvelopeViews();
+  FeatureOptions features;
+
+  void Validate() const;  // throws Error naming the bad field
+
+  // Covers the evaluation envelope (SPEC §2.2): upper hemisphere 0..90 deg evenly sampled,
+  // in-plane roll -45..45 deg.
+  static ViewSamplingOptions DefaultEnvelopeViews();
+};
+
+nlohmann::json ToJson(const TrainingProfile& profile);
+TrainingProfile TrainingProfileFromJson(const nlohmann::json& json);  // throws FormatError
+
+// Profile files (JSON). Save is atomic; Load throws IoError/FormatError naming the file.
+void SaveTrainingProfile(const std::filesystem::path& path, const TrainingProfile& profile);
+TrainingProfile LoadTrainingProfile(const std::filesystem::path& path);
+
+}  // namespace layermod

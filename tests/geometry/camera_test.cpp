@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include "geometry/camera.h"
+
+#include <gtest/gtest.h>
+
+#include "support/matchers.h"
+#include "support/test_paths.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+PinholeCamera Kinect() { return {572.4114, 573.57043, 325.2611, 242.04899, 640, 480}; }
+
+TEST(CameraTest, ProjectBackprojectRoundTrip) {
+  const PinholeCamera camera = Kinect();
+  const Eigen::Vector3d point(12.0, -40.0, 800.0);
+  const Eigen::Vector2d pixel = camera.Project(point);
+  EXPECT_THAT(camera.Backproject(pixel, 800.0), test::MatrixNear(point, 1e-9));
+}
+
+TEST(CameraTest, ScaledKeepsContinuousCoordinates) {
+  const PinholeCamera half = Kinect().Scaled(0.5);
+  EXPECT_EQ(half.width, 320);
+  EXPECT_EQ(half.height, 240);
+  const Eigen::Vector3d point(50.0, 20.0, 700.0);
+  // (u + 0.5) halves exactly.
+  const Eigen::Vector2d full = Kinect().Project(point);
+  const Eigen::Vector2d scaled = half.Project(point);
+  EXPECT_NEAR(scaled.x() + 0.5, (full.x() + 0.5) * 0.5, 1e-9);
+  EXPECT_NEAR(scaled.y() + 0.5, (full.y() + 0.5) * 0.5, 1e-9);
+}
+
+TEST(CameraTest, LoadsBopCameraFile) {
+  test::TempDir dir;
+  WriteFileAtomically(dir / "camera.json",
+                      R"({"cx": 325.2611, "cy": 242.04899, "depth_scale": 1.0, "fx": 572.4114,
+                          "fy": 573.57043, "height": 480, "width": 640})");
+  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), Kinect());
+}
+
+TEST(CameraTest, MissingFieldIsNamed) {
+  test::TempDir dir;
+  WriteFileAtomically(dir / "camera.json", R"({"cx": 1, "cy": 2, "fx": 3, "fy": 4, "width": 640})");
+  try {
+    LoadCameraJson(dir / "camera.json");
+    FAIL() << "expected FormatError";
+  } catch (const FormatError& error) {
+    EXPECT_NE(std::string(error.what()).find("'height' is missing"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("camera.json"), std::string::npos);
+  }
+}
+
+TEST(CameraTest, RejectsBadValues) {
+  test::TempDir dir;
+  WriteFileAtomically(dir / "neg.json",
+                      R"({"cx": 1, "cy": 2, "fx": -3, "fy": 4, "width": 640, "height": 480})");
+  WriteFileAtomically(dir / "str.json",
+                      R"({"cx": "1", "cy": 2, "fx": 3, "fy": 4, "width": 640, "height": 480})");
+  WriteFileAtomically(dir / "frac.json",
+                      R"({"cx": 1, "cy": 2, "fx": 3, "fy": 4, "width": 640.5, "height": 480})");
+  WriteFileAtomically(dir / "junk.json", "not json");
+  EXPECT_THROW(LoadCameraJson(dir / "neg.json"), FormatError);
+  EXPECT_THROW(LoadCameraJson(dir / "str.json"), FormatError);
+  EXPECT_THROW(LoadCameraJson(dir / "frac.json"), FormatError);
+  EXPECT_THROW(LoadCameraJson(dir / "junk.json"), FormatError);
+  EXPECT_THROW(LoadCameraJson(dir / "absent.json"), IoError);
+}
+
+}  // namespace
+}  // namespace layermod
