@@ -22,7 +22,9 @@ void FeatureOptions::Validate() const {
   if (!(max_normal_depth_step_mm > 0.0f)) {
     throw Error("features: max_normal_depth_step_mm must be positive");
   }
-  if (pyramid_levels < 1 || pyramid_levels > 4) throw Error("features: pyramid_levels must be 1..4");
+  if (pyramid_levels < 1 || pyramid_levels > 4) {
+    throw Error("features: pyramid_levels must be 1..4");
+  }
   if (static_cast<int>(spread_px.size()) != pyramid_levels) {
     throw Error("features: spread_px needs one value per pyramid level");
   }

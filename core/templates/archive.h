@@ -9,6 +9,7 @@
 
 #include "geometry/camera.h"
 #include "geometry/sphere.h"
+#include "mesh/render_mesh.h"
 #include "templates/template_record.h"
 #include "templates/training_profile.h"
 
@@ -20,15 +21,16 @@ inline constexpr int kArchiveFormatVersion = 1;
 struct ArchiveObject {
   std::int32_t obj_id = 0;
   std::string name;
-  std::string mesh_file;    // file name the object was trained from (no directory)
-  std::string mesh_hash;    // hex digest of the mesh file bytes
-  std::string units = "mm"; // units of the source mesh before conversion to mm
-  Sphere sphere;            // circumscribing sphere in model mm
-  double diameter_mm = 0.0; // 2 * sphere.radius
+  std::string mesh_file;     // file name the object was trained from (no directory)
+  std::string mesh_hash;     // hex digest of the mesh file bytes
+  std::string units = "mm";  // units of the source mesh before conversion to mm
+  Sphere sphere;             // circumscribing sphere in model mm
+  double diameter_mm = 0.0;  // 2 * sphere.radius
   Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero();
   Eigen::Vector3d bbox_size = Eigen::Vector3d::Zero();
   std::vector<double> layer_depths_mm;  // layer_index -> depth
   TrainingProfile profile;
+  RenderMesh mesh;  // the cleaned model (mm) for pose refinement, verification and overlays
 };
 
 // The readable manifest of a *.layermod file.

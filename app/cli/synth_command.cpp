@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "cli/progress_bar.h"
+#include "geometry/camera.h"
+#include "synth/synthesizer.h"
+#include "util/error.h"
+
+namespace layermod::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SynthArgs {
+  std::string models;
+  std::vector<std::int32_t> obj_ids;
+  int scenes = 10;
+  std::uint64_t seed = 1;
+  double dmin_mm = 650.0;
+  double dmax_mm = 1150.0;
+  std::string backgrounds;
+  std::string camera;
+  int clutter = 3;
+  bool no_noise = false;
+  int threads = 0;
+  std::string out;
+};
+
+// --camera, else the BOP dataset's camera.json beside the models folder (or, for a single
+// model file, in its folder).
+fs::path CameraPath(const SynthArgs& args) {
+  if (!args.camera.empty()) return args.camera;
+  const fs::path models(args.models);
+  std::error_code ec;
+  const fs::path beside = fs::is_regular_file(models, ec)
+                              ? models.parent_path() / "camera.json"
+                              : (models / ".." / "camera.json").lexically_normal();
+  if (fs::is_regular_file(beside, ec)) return beside;
+  throw Error("no --camera given and '" + beside.string() +
+              "' does not exist; give the sensor's camera.json");
+}
+
+SynthOptions BuildOptions(const SynthArgs& args) {
+  SynthOptions options;
+  options.models_dir = args.models;
+  options.obj_ids = args.obj_ids;
+  options.scenes = args.scenes;
+  options.seed = args.seed;
+  options.dmin_mm = args.dmin_mm;
+  options.dmax_mm = args.dmax_mm;
+  options.backgrounds_dir = args.backgrounds;
+  options.clutter = args.clutter;
+  options.noise.enabled = !args.no_noise;
+  options.threads = args.threads;
+  options.out_dir = args.out;
+  options.camera = LoadCameraJson(CameraPath(args));
+  options.Validate();
+  return options;
+}
+
+void PrintSummary(const SynthSummary& summary) {
+  std::string per_target;
+  for (const auto& [obj_id, images] : summary.images_per_target) {
+    if (!per_target.empty()) per_target += ", ";
+    per_target += "obj " + std::to_string(obj_id) + ": " + std::to_string(images);
+  }
+  std::printf("images        %d (%s)\n", summary.images, per_target.c_str());
+  std::printf("distance      %.0f..%.0f mm (camera to target sphere centre)\n",
+              summary.min_distance_mm, summary.max_distance_mm);
+  std::printf("visibility    min %.2f, mean %.2f (target)\n", summary.min_visibility,
+              summary.mean_visibility);
+  std::printf("time          %.1f s (%.1f images/s)\n", summary.seconds,
+              summary.seconds > 0.0 ? summary.images / summary.seconds : 0.0);
+  std::printf("dataset       %s\n", summary.out_dir.string().c_str());
+}
+
+void RunSynth(const SynthArgs& args) {
+  const SynthOptions options = BuildOptions(args);
+  CancelToken cancel;
+  InterruptScope interrupt(cancel);
+  ProgressBar bar;
+  const JobControl job([&bar](std::size_t done, std::size_t total,
+                              std::string_view stage) { bar.Update(done, total, stage); },
+                       &cancel);
+  SynthSummary summary;
+  try {
+    summary = SynthesizeScenes(options, job);
+  } catch (...) {
+    bar.Finish();
+    throw;
+  }
+  bar.Finish();
+  PrintSummary(summary);
+}
+
+}  // namespace
+
+void AddSynthCommand(CLI::App& app) {
+  auto args = std::make_shared<SynthArgs>();
+  CLI::App* command = app.add_subcommand(
+      "synth", "Generate synthetic RGB-D scenes with exact ground truth as a BOP dataset");
+  command
+      ->add_option("--models", args->models,
+                   "BOP models folder (obj_NNNNNN.ply), or one PLY file for one object id")
+      ->required();
+  command->add_option("--obj-ids", args->obj_ids, "Target object ids, one per image, cycled")
+      ->delimiter(',')
+      ->required();
+  command->add_option("--scenes", args->scenes, "Number of images")->capture_default_str();
+  command->add_option("--seed", args->seed, "Random seed (same seed, same dataset)")
+      ->capture_default_str();
+  command->add_option("--dmin", args->dmin_mm, "Nearest camera-to-target distance (mm)")
+      ->capture_default_str();
+  command->add_option("--dmax", args->dmax_mm, "Farthest camera-to-target distance (mm)")
+      ->capture_default_str();
+  command->add_option("--backgrounds", args->backgrounds,
+                      "Folder of photos for the table texture (default: procedural)");
+  command->add_option("--camera", args->camera,
+                      "BOP camera.json (default: camera.json beside the models folder)");
+  command
+      ->add_option("--clutter", args->clutter,
+                   "Up to this many other models and primitives around the target (0..5)")
+      ->capture_default_str();
+  command->add_flag("--no-noise", args->no_noise, "Write the noiseless renders (no sensor model)");
+  command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--out", args->out, "Dataset folder to create (new or empty)")->required();
+  command->callback([args] { RunSynth(*args); });
+}
+
+}  // namespace layermod::cli

@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cli/commands.h"
+#include "cli/interrupt.h"
+#include "cli/progress_bar.h"
+#include "geometry/units.h"
+#include "mesh/model.h"
+#include "pipeline/training.h"
+#include "templates/archive.h"
+#include "util/atomic_file.h"
+#include "util/log.h"
+
+namespace layermod::cli {
+namespace {
+
+struct TrainArgs {
+  std::string model;
+  std::string name;
+  std::string camera;
+  std::string profile;
+  std::string out;
+  std::string units = "mm";
+  std::string azimuth;
+  std::string elevation;
+  std::string roll;
+  std::int32_t obj_id = 1;
+  double dmin_mm = 0.0;
+  double dmax_mm = 0.0;
+  double even_views_deg = -1.0;
+  int color_features = -1;
+  int normal_features = -1;
+  int threads = 0;
+};
+
+// Profile: the file if given, else the defaults; explicit flags win.
+TrainingProfile BuildProfile(const TrainArgs& args) {
+  TrainingProfile profile = args.profile.empty() ? TrainingProfile{}
+                                                 : LoadTrainingProfile(args.profile);
+  if (args.dmin_mm != 0.0) profile.depth_min_mm = args.dmin_mm;
+  if (args.dmax_mm != 0.0) profile.depth_max_mm = args.dmax_mm;
+  ViewSamplingOptions& views = profile.views;
+  if (!args.azimuth.empty()) views.azimuth = AngleRange::Parse(args.azimuth, "--azimuth");
+  if (!args.elevation.empty()) views.elevation = AngleRange::Parse(args.elevation, "--elevation");
+  if (!args.roll.empty()) views.roll = AngleRange::Parse(args.roll, "--roll");
+  // An explicit az/el grid means grid sampling unless --even-views is also given.
+  if (!args.azimuth.empty() || !args.elevation.empty()) views.even_spacing_deg = 0.0;
+  if (args.even_views_deg >= 0.0) views.even_spacing_deg = args.even_views_deg;
+  if (args.color_features >= 0) profile.features.color_features = args.color_features;
+  if (args.normal_features >= 0) profile.features.normal_features = args.normal_features;
+  profile.Validate();
+  return profile;
+}
+
+void PrintSummary(const TrainingSummary& summary, const std::string& out) {
+  std::printf("radius        %.2f mm (diameter %.2f mm)\n", summary.radius_mm,
+              2.0 * summary.radius_mm);
+  std::printf("depth layers  %d\n", summary.layers);
+  std::printf("templates     %zu (%zu weak)\n", summary.templates, summary.weak_templates);
+  std::printf("time          %.2f s (%.0f templates/s)\n", summary.seconds,
+              summary.TemplatesPerSecond());
+  std::printf("archive       %s\n", out.c_str());
+}
+
+void RunTrain(const TrainArgs& args) {
+  TrainingRequest request;
+  request.obj_id = args.obj_id;
+  request.name = args.name;
+  request.camera = LoadCameraJson(args.camera);
+  request.profile = BuildProfile(args);
+  request.threads = args.threads;
+  CheckWritableTarget(args.out);  // fail before the work, not after it
+
+  LoadModelOptions load_options;
+  load_options.units = ParseLengthUnit(args.units);
+  const Model model = LoadModel(args.model, load_options);
+  if (request.name.empty()) request.name = model.source.stem().string();
+  const TrainingPlan plan = PlanTraining(model, request);
+  std::fprintf(stderr, "training %zu templates: %zu views x %zu depth layers (radius %.2f mm)\n",
+               plan.TemplateCount(), plan.views.size(), plan.layer_depths_mm.size(),
+               plan.radius_mm);
+
+  CancelToken cancel;
+  InterruptScope interrupt(cancel);
+  ProgressBar bar;
+  const JobControl job(
+      [&bar](std::size_t done, std::size_t total, std::string_view stage) {
+        bar.Update(done, total, stage);
+      },
+      &cancel);
+  TrainingResult result = TrainTemplates(model, request, job);
+  bar.Finish();
+  job.ThrowIfCancelled();
+  WriteArchive(args.out, result.archive);
+  PrintSummary(result.summary, args.out);
+}
+
+}  // namespace
+
+void AddTrainCommand(CLI::App& app) {
+  auto args = std::make_shared<TrainArgs>();
+  CLI::App* command = app.add_subcommand(
+      "train", "Train multi-scale LineMOD templates of a mesh into a .layermod archive");
+  command->add_option("--model", args->model, "Mesh file (PLY, STL, OBJ, OFF, glTF, ...)")
+      ->required();
+  command->add_option("--obj-id", args->obj_id, "Object id stored with the templates")
+      ->capture_default_str();
+  command->add_option("--name", args->name, "Object name (default: mesh file name)");
+  command->add_option("--camera", args->camera, "BOP camera.json (fx fy cx cy width height)")
+      ->required();
+  command->add_option("--profile", args->profile, "Training profile JSON (flags override it)");
+  command->add_option("--dmin", args->dmin_mm, "Nearest object distance D_min (mm)");
+  command->add_option("--dmax", args->dmax_mm, "Farthest object distance D_max (mm)");
+  command->add_option("--azimuth", args->azimuth, "Azimuth grid min:step:max (deg)");
+  command->add_option("--elevation", args->elevation, "Elevation grid min:step:max (deg)");
+  command->add_option("--roll", args->roll, "In-plane rotation grid min:step:max (deg)");
+  command->add_option("--even-views", args->even_views_deg,
+                      "Even view-sphere sampling with this spacing (deg); 0 = az/el grid");
+  command->add_option("--color-features", args->color_features,
+                      "Colour-gradient features per template");
+  command->add_option("--normal-features", args->normal_features,
+                      "Depth-normal features per template");
+  command->add_option("--units", args->units, "Units of the mesh file: mm or m")
+      ->check(CLI::IsMember({"mm", "m"}))
+      ->capture_default_str();
+  command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--out", args->out, "Output archive (*.layermod)")->required();
+  command->callback([args] { RunTrain(*args); });
+}
+
+}  // namespace layermod::cli

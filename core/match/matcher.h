@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Stage 5 of LineMOD matching (PAMI 2012, §2.6-3): templates against a prepared scene, coarse to
+// fine over the pyramid, optionally only around given candidate points (the Scene-Patch
+// invocation, SPEC §3.3), then non-maximum suppression.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <span>
+#include <vector>
+
+#include "match/scene_level.h"
+#include "match/simd.h"
+#include "templates/template_record.h"
+
+namespace layermod {
+
+struct MatchOptions {
+  float threshold_percent = 80.0f;  // similarity a match needs, at the top level and at level 0
+  // Matches of one object (TemplateRecord::obj_id) whose box centres lie at most this far apart
+  // (level-0 px) are duplicates: only the best is kept. Different objects never suppress each
+  // other. 0 removes exact duplicates only.
+  int nms_radius_px = 16;
+  int max_matches = 100;  // best matches returned after suppression
+  // Top-level positions refined per template, best first: bounds the work on cluttered scenes
+  // where thousands of coarse positions pass the threshold.
+  int max_candidates_per_template = 64;
+  SimdPath simd = SimdPath::kAuto;
+
+  void Validate() const;  // throws Error naming the bad field
+};
+
+struct RawMatch {
+  int x = 0;  // level-0 top-left of the template box in scene pixels
+  int y = 0;
+  float similarity_percent = 0.0f;  // at level 0: 100 * score / (4 * usable features)
+  std::uint32_t template_id = 0;
+
+  bool operator==(const RawMatch&) const = default;
+};
+
+// A scene ready for matching: every pyramid level spread and turned into response maps once,
+// then shared (read-only, thread-safe) by all templates. The linear memories of a level are built
+// on first use: only the levels where templates are scored on the whole grid (their top level)
+// need them, and linearizing full resolution would cost about half of the preparation.
+class PreparedScene {
+ public:
+  PreparedScene();  // no levels: matches nothing
+  ~PreparedScene();
+  PreparedScene(PreparedScene&&) noexcept;
+  PreparedScene& operator=(PreparedScene&&) noexcept;
+
+  // quantized[level][ModalityIndex(modality)]: CV_8UC1 bitmasks from the features stage (level k
+  // at 1/2^k resolution); an absent modality is an empty Mat. spread_px[level]: LineMOD's T
+  // (FeatureOptions::spread_px). Throws Error for fewer T than levels or invalid images.
+  PreparedScene(const std::vector<std::array<cv::Mat, kModalityCount>>& quantized,
+                const std::vector<int>& spread_px, SimdPath simd = SimdPath::kAuto);
+
+  int LevelCount() const { return static_cast<int>(levels_.size()); }
+  // The level's responses (its linear memories only if already built).
+  const SceneLevel& Level(int level) const;
+  // The level with its linear memories, built on the first call (thread-safe; concurrent callers
+  // help, so calling from inside oneTBB tasks is fine).
+  const SceneLevel& LinearizedLevel(int level) const;
+
+ private:
+  struct LazyLevel;
+  std::vector<std::unique_ptr<LazyLevel>> levels_;
+};
+
+// Matches every template (status kTooFewFeatures ones are skipped) against the scene. Per
+// template, over the levels both it and the scene have: every valid grid position of the top
+// level is scored (all modalities' features together); positions at or above the threshold are
+// refined pixel by pixel at that level within their grid cell, then at each lower level within
+// +-T of the upscaled position (the best spread score wins; ties go to the best pixel-exact
+// alignment, see ExactAlignmentScore); matches at or above the threshold at level 0 survive,
+// then non-maximum suppression (MatchOptions::nms_radius_px). Templates run in parallel (oneTBB).
+//
+// candidate_points (level-0 pixels): when given, only top-level grid positions that put the
+// template CENTRE (box top-left + (width / 2, height / 2) at level 0) within candidate_radius_px
+// of a point are scored; an empty list matches nothing.
+//
+// Deterministic: sorted by similarity (descending), then template id, then y, then x.
+// Throws Error for invalid options or a template with invalid features (naming its id).
+std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
+                                     std::span<const TemplateRecord> templates,
+                                     const MatchOptions& options,
+                                     const std::vector<cv::Point>* candidate_points = nullptr,
+                                     int candidate_radius_px = 0);
+
+}  // namespace layermod

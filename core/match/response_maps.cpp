@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include "match/response_maps.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+struct NibbleTables {
+  // low[l][m]: best similarity of orientation l with the bits of m as labels 0..3;
+  // high[l][m]: the same with the bits of m as labels 4..7.
+  std::array<std::array<std::uint8_t, 16>, kOrientationCount> low{};
+  std::array<std::array<std::uint8_t, 16>, kOrientationCount> high{};
+};
+
+NibbleTables MakeNibbleTables() {
+  NibbleTables tables;
+  for (int label = 0; label < kOrientationCount; ++label) {
+    for (int nibble = 0; nibble < 16; ++nibble) {
+      int low = 0;
+      int high = 0;
+      for (int bit = 0; bit < 4; ++bit) {
+        if ((nibble & (1 << bit)) == 0) continue;
+        low = std::max(low, OrientationSimilarity(label, bit));
+        high = std::max(high, OrientationSimilarity(label, bit + 4));
+      }
+      tables.low[label][nibble] = static_cast<std::uint8_t>(low);
+      tables.high[label][nibble] = static_cast<std::uint8_t>(high);
+    }
+  }
+  return tables;
+}
+
+const NibbleTables& Tables() {
+  static const NibbleTables tables = MakeNibbleTables();
+  return tables;
+}
+
+}  // namespace
+
+int OrientationSimilarity(int label, int scene_label) {
+  const int difference = std::abs(label - scene_label) % kOrientationCount;
+  const int distance = std::min(difference, kOrientationCount - difference);
+  if (distance == 0) return kMaxFeatureScore;
+  return distance == 1 ? 1 : 0;
+}
+
+int BitmaskSimilarity(int label, std::uint8_t bitmask) {
+  const NibbleTables& tables = Tables();
+  return std::max(tables.low[label][bitmask & 15], tables.high[label][bitmask >> 4]);
+}
+
+std::array<cv::Mat, kOrientationCount> ComputeResponseMaps(const cv::Mat& spread, SimdPath path) {
+  if (!spread.empty() && spread.type() != CV_8UC1) {
+    throw Error("spread orientations must be CV_8UC1 bitmasks, got type " +
+                std::to_string(spread.type()));
+  }
+  const SimdPath kernel = ResolveSimdPath(path);
+  const NibbleTables& tables = Tables();
+  std::array<cv::Mat, kOrientationCount> maps;
+  if (spread.empty()) return maps;
+  for (int label = 0; label < kOrientationCount; ++label) {
+    // The slack columns stay 0 so block reads past a row's end add nothing surprising.
+    cv::Mat storage = cv::Mat::zeros(spread.rows, spread.cols + kSimdBlock, CV_8UC1);
+    maps[label] = storage.colRange(0, spread.cols);
+    for (int y = 0; y < spread.rows; ++y) {
+      LookupNibbleMax(spread.ptr<std::uint8_t>(y), maps[label].ptr<std::uint8_t>(y), spread.cols,
+                      tables.low[label].data(), tables.high[label].data(), kernel);
+    }
+  }
+  return maps;
+}
+
+}  // namespace layermod

@@ -1,0 +1,387 @@
+// SPDX-License-Identifier: MIT
+#include "match/similarity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "match/response_maps.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+// A stretch of consecutive positions: for every feature, `length` source bytes starting at the
+// feature's base pointer + source_offset are added to the buffer at buffer_offset.
+struct Run {
+  int buffer_offset = 0;
+  std::ptrdiff_t source_offset = 0;
+  int length = 0;
+};
+
+bool UseEightBits(Accumulator accumulator, int feature_count) {
+  if (accumulator == Accumulator::k8Bit && feature_count > kMax8BitFeatures) {
+    throw Error("the 8-bit similarity path holds at most " + std::to_string(kMax8BitFeatures) +
+                " features, the template has " + std::to_string(feature_count));
+  }
+  if (accumulator == Accumulator::kAuto) return feature_count <= kMax8BitFeatures;
+  return accumulator == Accumulator::k8Bit;
+}
+
+// Sums the features' source bytes over the runs. `buffer_size` must cover every run's block
+// rounding (RoundUpToSimdBlock), and the runs' rounded stretches must not overlap.
+std::vector<std::uint16_t> AccumulateRuns(const std::vector<const std::uint8_t*>& sources,
+                                          const std::vector<Run>& runs, int buffer_size,
+                                          const SimilarityOptions& options) {
+  const SimdPath path = ResolveSimdPath(options.simd);
+  const int count = static_cast<int>(sources.size());
+  const bool eight_bit = UseEightBits(options.accumulator, count);
+  std::vector<std::uint16_t> sums(buffer_size, 0);
+  std::vector<std::uint8_t> partial(buffer_size);
+  const int chunk = eight_bit ? std::max(count, 1) : kMax8BitFeatures;
+  for (int first = 0; first < count; first += chunk) {
+    std::fill(partial.begin(), partial.end(), 0);
+    const int last = std::min(count, first + chunk);
+    for (const Run& run : runs) {
+      AddRowsSaturateU8(partial.data() + run.buffer_offset, sources.data() + first, last - first,
+                        run.source_offset, run.length, path);
+    }
+    if (eight_bit) {
+      std::copy(partial.begin(), partial.end(), sums.begin());
+      continue;
+    }
+    for (const Run& run : runs) {
+      AddSaturateWidenU16(sums.data() + run.buffer_offset, partial.data() + run.buffer_offset,
+                          run.length, path);
+    }
+  }
+  return sums;
+}
+
+// Runs closer than this many cells are merged: computing a short gap costs less than another
+// block-rounded run (and rounded runs must not overlap anyway).
+constexpr int kMergeGapCells = kSimdBlock;
+
+// Spans clipped to the valid cells, empty ones dropped, sorted by row then first column.
+std::vector<GridRowSpan> ClipAndSortSpans(std::span<const GridRowSpan> spans,
+                                          const cv::Size& cells) {
+  std::vector<GridRowSpan> clipped;
+  clipped.reserve(spans.size());
+  for (GridRowSpan span : spans) {
+    span.first_column = std::max(span.first_column, 0);
+    span.last_column = std::min(span.last_column, cells.width - 1);
+    if (span.row < 0 || span.row >= cells.height || span.first_column > span.last_column) continue;
+    clipped.push_back(span);
+  }
+  std::sort(clipped.begin(), clipped.end(), [](const GridRowSpan& a, const GridRowSpan& b) {
+    return std::tie(a.row, a.first_column) < std::tie(b.row, b.first_column);
+  });
+  return clipped;
+}
+
+// The spans' cells in row-major index space (stride grid_width), as runs. Consecutive spans are
+// merged when close, across row ends too: the cells in between (including those past a row's
+// last valid column) are computed in passing and never read back, and one long run beats many
+// short ones. `spans` must be sorted (ClipAndSortSpans).
+std::vector<Run> GridRuns(const std::vector<GridRowSpan>& spans, int grid_width) {
+  std::vector<Run> runs;
+  for (const GridRowSpan& span : spans) {
+    const int start = span.row * grid_width + span.first_column;
+    const int end = span.row * grid_width + span.last_column + 1;
+    if (!runs.empty()) {
+      Run& last = runs.back();
+      if (start < last.buffer_offset + RoundUpToSimdBlock(last.length) + kMergeGapCells) {
+        last.length = std::max(last.length, end - last.buffer_offset);
+        continue;
+      }
+    }
+    runs.push_back(Run{start, start, end - start});
+  }
+  return runs;
+}
+
+// Every valid cell, or the non-zero stretches of a mask, as spans.
+std::vector<GridRowSpan> AllCells(const cv::Size& cells) {
+  std::vector<GridRowSpan> spans;
+  spans.reserve(cells.height);
+  for (int gy = 0; gy < cells.height; ++gy) spans.push_back({gy, 0, cells.width - 1});
+  return spans;
+}
+
+std::vector<GridRowSpan> MaskSpans(const cv::Mat& mask) {
+  std::vector<GridRowSpan> spans;
+  for (int gy = 0; gy < mask.rows; ++gy) {
+    const std::uint8_t* row = mask.ptr<std::uint8_t>(gy);
+    for (int gx = 0; gx < mask.cols; ++gx) {
+      if (row[gx] == 0) continue;
+      const int first = gx;
+      while (gx + 1 < mask.cols && row[gx + 1] != 0) ++gx;
+      spans.push_back({gy, first, gx});
+    }
+  }
+  return spans;
+}
+
+template <typename Fn>
+void ForEachUsableFeature(const TemplateLevel& level, const SceneLevel& scene, Fn&& fn) {
+  for (const Feature& feature : level.features) {
+    if (scene.HasModality(feature.modality)) fn(feature);
+  }
+}
+
+// The row step shared by the response maps the features read; they must keep block slack.
+std::size_t CommonResponseStep(const TemplateLevel& level, const SceneLevel& scene) {
+  std::size_t step = 0;
+  ForEachUsableFeature(level, scene, [&](const Feature& feature) {
+    const cv::Mat& map = scene.responses[ModalityIndex(feature.modality)][feature.label];
+    if (step != 0 && map.step[0] != step) {
+      throw Error("the scene's response maps do not share one row step");
+    }
+    step = map.step[0];
+  });
+  if (step < static_cast<std::size_t>(scene.size_px.width) + kSimdBlock) {
+    throw Error("the scene's response maps lack the SIMD block slack (use ComputeResponseMaps)");
+  }
+  return step;
+}
+
+// x / T for 0 <= x <= 32767 (feature coordinates are int16) and 1 <= T <= kMaxSpreadPx, by a
+// multiply and shift: a hardware division per feature and coordinate used to cost more than
+// setting up the rest of a template's grid pass. Exact: with magic = floor(2^20 / T) + 1 the
+// error term x * (magic * T - 2^20) / 2^20 stays below 1 / T because x * T < 2^20.
+class SpreadDivider {
+ public:
+  explicit SpreadDivider(int spread_px)
+      : spread_px_(spread_px), magic_((1u << 20) / static_cast<std::uint32_t>(spread_px) + 1) {}
+  int Quotient(int x) const {
+    return static_cast<int>((static_cast<std::uint32_t>(x) * magic_) >> 20);
+  }
+  int Remainder(int x) const { return x - Quotient(x) * spread_px_; }
+
+ private:
+  int spread_px_;
+  std::uint32_t magic_;
+};
+
+// Cells per grid row; the same for every present modality (they share the level's size).
+int GridWidth(const SceneLevel& scene) {
+  for (const LinearMemories& memories : scene.memories) {
+    if (memories.grid_size.width > 0) return memories.grid_size.width;
+  }
+  return 0;
+}
+
+std::string InvalidFeatureMessage(const TemplateLevel& level, const Feature& feature) {
+  return "template level " + std::to_string(level.pyramid_level) + " has an invalid feature (x " +
+         std::to_string(feature.x) + ", y " + std::to_string(feature.y) + ", label " +
+         std::to_string(feature.label) + ", modality " +
+         std::to_string(ModalityIndex(feature.modality)) + ")";
+}
+
+cv::Rect ValidRect(const cv::Size& extent, const cv::Size& scene_size_px) {
+  const int columns = scene_size_px.width - extent.width + 1;
+  const int rows = scene_size_px.height - extent.height + 1;
+  if (columns <= 0 || rows <= 0) return {};
+  return {0, 0, columns, rows};
+}
+
+// The grid pass proper, on a summarized template level.
+GridSimilarity ScoreGrid(const TemplateLevel& level, const SceneLevel& scene,
+                         const TemplateLevelSummary& summary, std::span<const GridRowSpan> spans,
+                         const SimilarityOptions& options) {
+  GridSimilarity result;
+  result.spread_px = scene.spread_px;
+  result.feature_count = summary.usable_features;
+  const cv::Size cells = GridPositionCount(summary.extent, scene);
+  result.sums = cv::Mat::zeros(cells, CV_16UC1);
+  if (cells.empty() || result.feature_count == 0) return result;
+  if (!scene.linearized) {
+    throw Error("the scene level has no linear memories (use LinearizeSceneLevel)");
+  }
+  const std::vector<GridRowSpan> wanted = ClipAndSortSpans(spans, cells);
+  if (wanted.empty()) return result;
+  const int grid_width = GridWidth(scene);
+  const std::vector<Run> runs = GridRuns(wanted, grid_width);
+  const SpreadDivider divider(scene.spread_px);
+  std::vector<const std::uint8_t*> sources;
+  sources.reserve(result.feature_count);
+  ForEachUsableFeature(level, scene, [&](const Feature& f) {
+    const LinearMemory& memory = scene.memories[ModalityIndex(f.modality)].orientations[f.label];
+    sources.push_back(memory.Memory(divider.Remainder(f.y), divider.Remainder(f.x)) +
+                      static_cast<std::ptrdiff_t>(divider.Quotient(f.y)) * grid_width +
+                      divider.Quotient(f.x));
+  });
+  const int buffer_size = runs.back().buffer_offset + RoundUpToSimdBlock(runs.back().length);
+  const std::vector<std::uint16_t> flat = AccumulateRuns(sources, runs, buffer_size, options);
+  for (const GridRowSpan& span : wanted) {
+    std::copy_n(
+        flat.begin() + static_cast<std::ptrdiff_t>(span.row) * grid_width + span.first_column,
+        span.last_column - span.first_column + 1,
+        result.sums.ptr<std::uint16_t>(span.row) + span.first_column);
+  }
+  return result;
+}
+
+}  // namespace
+
+void CheckTemplateLevel(const TemplateLevel& level) {
+  if (level.features.size() > static_cast<std::size_t>(kMaxTemplateFeatures)) {
+    throw Error("template level " + std::to_string(level.pyramid_level) + " has " +
+                std::to_string(level.features.size()) + " features, more than " +
+                std::to_string(kMaxTemplateFeatures));
+  }
+  for (const Feature& feature : level.features) {
+    if (feature.x < 0 || feature.y < 0 || feature.label >= kOrientationCount ||
+        ModalityIndex(feature.modality) >= kModalityCount) {
+      throw Error(InvalidFeatureMessage(level, feature));
+    }
+  }
+}
+
+TemplateLevelSummary SummarizeTemplateLevel(const TemplateLevel& level, const SceneLevel& scene) {
+  if (level.features.size() > static_cast<std::size_t>(kMaxTemplateFeatures)) {
+    CheckTemplateLevel(level);  // throws with the message
+  }
+  TemplateLevelSummary summary;
+  summary.extent = cv::Size(std::max(level.width, 0), std::max(level.height, 0));
+  for (const Feature& feature : level.features) {
+    if (feature.x < 0 || feature.y < 0 || feature.label >= kOrientationCount ||
+        ModalityIndex(feature.modality) >= kModalityCount) {
+      throw Error(InvalidFeatureMessage(level, feature));
+    }
+    summary.extent.width = std::max(summary.extent.width, feature.x + 1);
+    summary.extent.height = std::max(summary.extent.height, feature.y + 1);
+    summary.usable_features += scene.HasModality(feature.modality) ? 1 : 0;
+  }
+  return summary;
+}
+
+cv::Size TemplateExtent(const TemplateLevel& level) {
+  cv::Size extent(std::max(level.width, 0), std::max(level.height, 0));
+  for (const Feature& feature : level.features) {
+    extent.width = std::max(extent.width, feature.x + 1);
+    extent.height = std::max(extent.height, feature.y + 1);
+  }
+  return extent;
+}
+
+cv::Rect ValidPositions(const TemplateLevel& level, const cv::Size& scene_size_px) {
+  return ValidRect(TemplateExtent(level), scene_size_px);
+}
+
+int UsableFeatureCount(const TemplateLevel& level, const SceneLevel& scene) {
+  int count = 0;
+  ForEachUsableFeature(level, scene, [&](const Feature&) { ++count; });
+  return count;
+}
+
+float SimilarityPercent(int sum, int feature_count) {
+  if (feature_count <= 0) return 0.0f;
+  return 100.0f * static_cast<float>(sum) / static_cast<float>(kMaxFeatureScore * feature_count);
+}
+
+int MinimumSumForPercent(float percent, int feature_count) {
+  const int max_sum = kMaxFeatureScore * std::max(feature_count, 0);
+  int sum = std::clamp(static_cast<int>(std::ceil(percent * static_cast<float>(max_sum) / 100.0f)),
+                       0, max_sum + 1);
+  // Float rounding may put the estimate one off either way; settle it with the percent itself.
+  while (sum > 0 && SimilarityPercent(sum - 1, feature_count) >= percent) --sum;
+  while (sum <= max_sum && SimilarityPercent(sum, feature_count) < percent) ++sum;
+  return sum;
+}
+
+cv::Size GridPositionCount(const TemplateLevel& level, const SceneLevel& scene) {
+  return GridPositionCount(TemplateExtent(level), scene);
+}
+
+cv::Size GridPositionCount(const cv::Size& template_extent, const SceneLevel& scene) {
+  const cv::Rect valid = ValidRect(template_extent, scene.size_px);
+  if (valid.empty() || scene.spread_px < 1) return {};
+  return {(valid.width - 1) / scene.spread_px + 1, (valid.height - 1) / scene.spread_px + 1};
+}
+
+GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                                     const cv::Mat& cell_mask, const SimilarityOptions& options) {
+  const TemplateLevelSummary summary = SummarizeTemplateLevel(level, scene);
+  const cv::Size cells = GridPositionCount(summary.extent, scene);
+  if (cell_mask.empty()) return ScoreGrid(level, scene, summary, AllCells(cells), options);
+  if (cell_mask.size() != cells || cell_mask.type() != CV_8UC1) {
+    throw Error("grid similarity mask must be CV_8UC1 of the grid position count");
+  }
+  return ScoreGrid(level, scene, summary, MaskSpans(cell_mask), options);
+}
+
+GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,
+                                            std::span<const GridRowSpan> spans,
+                                            const SimilarityOptions& options) {
+  return ScoreGrid(level, scene, SummarizeTemplateLevel(level, scene), spans, options);
+}
+
+LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                                       const cv::Rect& window_px,
+                                       const SimilarityOptions& options) {
+  const TemplateLevelSummary summary = SummarizeTemplateLevel(level, scene);
+  LocalSimilarity result;
+  result.window_px = window_px & ValidRect(summary.extent, scene.size_px);
+  result.feature_count = summary.usable_features;
+  if (result.window_px.empty()) {
+    result.window_px = cv::Rect();
+    return result;
+  }
+  result.sums = cv::Mat::zeros(result.window_px.size(), CV_16UC1);
+  if (result.feature_count == 0) return result;
+
+  const cv::Rect& window = result.window_px;
+  const std::size_t step = CommonResponseStep(level, scene);
+  // Each window row gets its own block-rounded stretch of the buffer, so rounding never spills
+  // into the next row.
+  const int stride = RoundUpToSimdBlock(window.width);
+  std::vector<Run> runs;
+  runs.reserve(window.height);
+  for (int r = 0; r < window.height; ++r) {
+    runs.push_back(Run{r * stride, static_cast<std::ptrdiff_t>(r * step), window.width});
+  }
+  std::vector<const std::uint8_t*> sources;
+  sources.reserve(result.feature_count);
+  ForEachUsableFeature(level, scene, [&](const Feature& f) {
+    const cv::Mat& map = scene.responses[ModalityIndex(f.modality)][f.label];
+    sources.push_back(map.ptr<std::uint8_t>(window.y + f.y) + window.x + f.x);
+  });
+  const std::vector<std::uint16_t> flat =
+      AccumulateRuns(sources, runs, window.height * stride, options);
+  for (int r = 0; r < window.height; ++r) {
+    std::copy_n(flat.begin() + static_cast<std::ptrdiff_t>(r) * stride, window.width,
+                result.sums.ptr<std::uint16_t>(r));
+  }
+  return result;
+}
+
+int ExactAlignmentScore(const TemplateLevel& level, const SceneLevel& scene,
+                        const cv::Point& top_left_px) {
+  return ExactAlignmentScores(level, scene, {top_left_px}).front();
+}
+
+std::vector<int> ExactAlignmentScores(const TemplateLevel& level, const SceneLevel& scene,
+                                      const std::vector<cv::Point>& top_left_px) {
+  const cv::Rect valid = ValidRect(SummarizeTemplateLevel(level, scene).extent, scene.size_px);
+  for (const cv::Point& position : top_left_px) {
+    if (!valid.contains(position)) {
+      throw Error("exact alignment asked at (" + std::to_string(position.x) + ", " +
+                  std::to_string(position.y) + "), where the template does not fit the scene");
+    }
+  }
+  std::vector<int> scores(top_left_px.size(), 0);
+  ForEachUsableFeature(level, scene, [&](const Feature& f) {
+    const cv::Mat& quantized = scene.quantized[ModalityIndex(f.modality)];
+    for (std::size_t i = 0; i < top_left_px.size(); ++i) {
+      const cv::Point& p = top_left_px[i];
+      scores[i] += BitmaskSimilarity(f.label, quantized.at<std::uint8_t>(p.y + f.y, p.x + f.x));
+    }
+  });
+  return scores;
+}
+
+}  // namespace layermod

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "pipeline/detection_poses.h"
+
+#include <algorithm>
+
+#include "pose/initial_pose.h"
+
+namespace layermod {
+namespace {
+
+Detection InitialDetection(const RawMatch& match, const TemplateRecord& tmpl,
+                           const ArchiveObject& object, const Capture& capture) {
+  Detection detection;
+  detection.obj_id = object.obj_id;
+  detection.name = object.name;
+  detection.score = match.similarity_percent;
+  detection.template_id = match.template_id;
+  detection.layer_index = tmpl.layer_index;
+  detection.layer_depth_mm = tmpl.layer_depth_mm;
+  detection.box_tl_px = cv::Point(match.x, match.y);
+  double centre_depth_mm = EstimateCentreDepthMm(tmpl, detection.box_tl_px, capture.depth_mm);
+  if (centre_depth_mm <= 0.0) centre_depth_mm = tmpl.layer_depth_mm;  // RGB only, or a hole
+  detection.cam_from_model = PoseFromMatch(tmpl, detection.box_tl_px, centre_depth_mm,
+                                           object.sphere.centre, capture.camera);
+  return detection;
+}
+
+bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& object) {
+  const Eigen::Vector3d centre_a = a.cam_from_model * object.sphere.centre;
+  const Eigen::Vector3d centre_b = b.cam_from_model * object.sphere.centre;
+  return (centre_a - centre_b).norm() < object.sphere.radius;
+}
+
+}  // namespace
+
+std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
+                                        const TemplateArchive& archive,
+                                        const ArchiveObject& object, const Capture& capture,
+                                        const DetectorOptions& options) {
+  std::vector<Detection> verified;
+  const int candidates = std::min(static_cast<int>(matches.size()), options.pose_candidates);
+  for (int i = 0; i < candidates; ++i) {
+    const RawMatch& match = matches[static_cast<std::size_t>(i)];
+    const TemplateRecord& tmpl = archive.templates().at(match.template_id);
+    Detection detection = InitialDetection(match, tmpl, object, capture);
+    if (!capture.depth_mm.empty()) {
+      detection.icp = RefinePoseIcp(object.mesh, capture.camera, capture.depth_mm,
+                                    detection.cam_from_model, options.icp);
+      detection.cam_from_model = detection.icp.cam_from_model;
+    }
+    detection.verification = VerifyPose(object.mesh, capture.camera, detection.cam_from_model,
+                                        capture.depth_mm, capture.color, options.verification);
+    if (detection.verification.accepted) verified.push_back(std::move(detection));
+  }
+  // Rank by appearance and geometry together: a high LineMOD score on a pose the depth
+  // contradicts is worth less than a slightly lower score the depth confirms.
+  const bool has_depth = !capture.depth_mm.empty();
+  auto rank = [has_depth](const Detection& d) {
+    return d.score * (has_depth ? d.verification.depth_inlier_ratio : 1.0);
+  };
+  std::stable_sort(verified.begin(), verified.end(),
+                   [&](const Detection& a, const Detection& b) { return rank(a) > rank(b); });
+  std::vector<Detection> kept;
+  for (Detection& detection : verified) {
+    const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const Detection& other) {
+      return SameInstance(other, detection, object);
+    });
+    if (duplicate) continue;
+    kept.push_back(std::move(detection));
+    if (static_cast<int>(kept.size()) == options.max_instances) break;
+  }
+  return kept;
+}
+
+}  // namespace layermod

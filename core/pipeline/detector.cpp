@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: MIT
+#include "pipeline/detector.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "features/depth_edges.h"
+#include "pipeline/detection_poses.h"
+#include "pipeline/scene_preparation.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double MsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+bool SameIntrinsics(const PinholeCamera& a, const PinholeCamera& b) {
+  auto close = [](double x, double y) { return std::abs(x - y) <= 1e-3 * std::max(1.0, std::abs(y)); };
+  return a.width == b.width && a.height == b.height && close(a.fx, b.fx) && close(a.fy, b.fy) &&
+         close(a.cx, b.cx) && close(a.cy, b.cy);
+}
+
+// Parameters the scene is quantized with must be the same for every object matched on it.
+bool SameSceneFeatures(const FeatureOptions& a, const FeatureOptions& b) {
+  return a.pyramid_levels == b.pyramid_levels && a.spread_px == b.spread_px &&
+         a.weak_gradient == b.weak_gradient &&
+         a.max_normal_depth_step_mm == b.max_normal_depth_step_mm;
+}
+
+std::vector<LayerEdgeRange> EdgeRanges(const TemplateArchive& archive, const ArchiveObject& object) {
+  std::vector<LayerEdgeRange> ranges(object.layer_depths_mm.size());
+  for (std::size_t layer = 0; layer < ranges.size(); ++layer) {
+    for (const TemplateRecord& tmpl : archive.TemplatesOf(object.obj_id, static_cast<int>(layer))) {
+      if (tmpl.status != TemplateStatus::kOk) continue;
+      LayerEdgeRange& range = ranges[layer];
+      range.n_min = range.valid ? std::min(range.n_min, tmpl.depth_edge_count) : tmpl.depth_edge_count;
+      range.n_max = range.valid ? std::max(range.n_max, tmpl.depth_edge_count) : tmpl.depth_edge_count;
+      range.valid = true;
+    }
+  }
+  return ranges;
+}
+
+void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera,
+                     DetectionMode mode) {
+  if (capture.color.empty()) throw Error("capture: no colour image");
+  if (capture.color.type() != CV_8UC3) throw Error("capture: colour must be 8-bit, 3 channels");
+  if (capture.color.cols != capture.camera.width || capture.color.rows != capture.camera.height) {
+    throw Error("capture: colour image is " + std::to_string(capture.color.cols) + "x" +
+                std::to_string(capture.color.rows) + " but the camera is " +
+                std::to_string(capture.camera.width) + "x" + std::to_string(capture.camera.height));
+  }
+  if (!capture.depth_mm.empty()) {
+    if (capture.depth_mm.type() != CV_32F) throw Error("capture: depth must be CV_32F mm");
+    if (capture.depth_mm.size() != capture.color.size()) {
+      throw Error("capture: depth and colour images differ in size");
+    }
+  } else if (mode != DetectionMode::kColorOnly) {
+    throw Error("capture: this mode needs depth; use --mode color-only for RGB-only captures");
+  }
+  if (!SameIntrinsics(capture.camera, archive_camera)) {
+    throw Error("capture: camera intrinsics differ from the archive's (templates were rendered "
+                "for another camera); retrain for this camera");
+  }
+}
+
+// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
+// templates, only around its surviving detection points.
+std::vector<RawMatch> MatchKeptBlocks(const PreparedScene& scene, const TemplateArchive& archive,
+                                      const ArchiveObject& object,
+                                      const ObjectDiagnostics& diagnostics,
+                                      const PinholeCamera& camera, const DetectorOptions& options) {
+  std::map<int, std::vector<cv::Point>> points_by_layer;
+  for (int index : diagnostics.coarse.kept) {
+    const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
+    const int layer =
+        diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index;
+    for (const DetectionPoint& point : block.points) {
+      if (point.kept) points_by_layer[layer].push_back(point.pixel);
+    }
+  }
+  std::vector<RawMatch> matches;
+  for (const auto& [layer, points] : points_by_layer) {
+    // Detection points aim at the object's centre; the matcher places template box centres,
+    // which sit up to about a quarter of the object's image size away from it.
+    const double object_size_px =
+        camera.fx * object.diameter_mm / object.layer_depths_mm[static_cast<std::size_t>(layer)];
+    const int radius_px = options.coarse.point_step_px + static_cast<int>(0.25 * object_size_px);
+    std::vector<RawMatch> layer_matches = MatchTemplates(
+        scene, archive.TemplatesOf(object.obj_id, layer), options.match, &points, radius_px);
+    matches.insert(matches.end(), layer_matches.begin(), layer_matches.end());
+  }
+  std::stable_sort(matches.begin(), matches.end(), [](const RawMatch& a, const RawMatch& b) {
+    return a.similarity_percent > b.similarity_percent;
+  });
+  return matches;
+}
+
+}  // namespace
+
+std::string_view ModeName(DetectionMode mode) {
+  switch (mode) {
+    case DetectionMode::kScenePatch: return "scene-patch";
+    case DetectionMode::kExhaustive: return "exhaustive";
+    case DetectionMode::kColorOnly: return "color-only";
+  }
+  return "?";
+}
+
+DetectionMode ParseDetectionMode(std::string_view text) {
+  for (DetectionMode mode :
+       {DetectionMode::kScenePatch, DetectionMode::kExhaustive, DetectionMode::kColorOnly}) {
+    if (text == ModeName(mode)) return mode;
+  }
+  throw Error("mode: expected scene-patch, exhaustive or color-only, got '" + std::string(text) + "'");
+}
+
+void DetectorOptions::Validate() const {
+  regions.Validate();
+  coarse.Validate();
+  match.Validate();
+  icp.Validate();
+  verification.Validate();
+  if (max_instances < 1 || pose_candidates < 1) {
+    throw Error("detector: max_instances and pose_candidates must be >= 1");
+  }
+}
+
+Detector::Detector(std::vector<TemplateArchive> archives) : archives_(std::move(archives)) {
+  if (archives_.empty()) throw Error("detector: no archive");
+  std::set<std::int32_t> seen;
+  const FeatureOptions& reference = archives_.front().manifest().objects.at(0).profile.features;
+  for (std::size_t a = 0; a < archives_.size(); ++a) {
+    if (!SameIntrinsics(archives_[a].camera(), camera())) {
+      throw Error("detector: archives were trained for different cameras");
+    }
+    for (const ArchiveObject& object : archives_[a].manifest().objects) {
+      if (!seen.insert(object.obj_id).second) {
+        throw Error("detector: object id " + std::to_string(object.obj_id) + " appears twice");
+      }
+      if (!SameSceneFeatures(object.profile.features, reference)) {
+        throw Error("detector: archives use different feature parameters (pyramid, spread, "
+                    "thresholds); train them with the same profile features");
+      }
+      objects_.push_back({a, object.obj_id, EdgeRanges(archives_[a], object)});
+    }
+  }
+}
+
+const ArchiveObject& Detector::Object(std::int32_t obj_id) const {
+  return ArchiveOf(obj_id).Object(obj_id);
+}
+
+const TemplateArchive& Detector::ArchiveOf(std::int32_t obj_id) const {
+  for (const ObjectEntry& entry : objects_) {
+    if (entry.obj_id == obj_id) return archives_[entry.archive];
+  }
+  throw Error("detector: no object " + std::to_string(obj_id));
+}
+
+DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& options) const {
+  options.Validate();
+  ValidateCapture(capture, camera(), options.mode);
+  const auto start = Clock::now();
+  DetectionResult result;
+  const FeatureOptions& features = archives_.front().manifest().objects.at(0).profile.features;
+  const bool use_depth = options.mode != DetectionMode::kColorOnly;
+  Capture used = capture;
+  if (!use_depth) used.depth_mm = cv::Mat();
+
+  auto stage_start = Clock::now();
+  const PreparedScene scene =
+      PrepareScene(used.color, used.depth_mm, used.camera, features, options.match.simd);
+  result.timings.prepare_ms = MsSince(stage_start);
+
+  for (const ObjectEntry& entry : objects_) {
+    const TemplateArchive& archive = archives_[entry.archive];
+    const ArchiveObject& object = archive.Object(entry.obj_id);
+    ObjectDiagnostics diagnostics;
+    diagnostics.obj_id = entry.obj_id;
+    if (options.mode == DetectionMode::kScenePatch) {
+      stage_start = Clock::now();
+      diagnostics.division = DivideScene(used.depth_mm, object.layer_depths_mm,
+                                         object.sphere.radius, options.regions);
+      result.timings.regions_ms += MsSince(stage_start);
+
+      stage_start = Clock::now();
+      const float edge_threshold_mm =
+          features.depth_edge_fraction * static_cast<float>(object.bbox_size.maxCoeff());
+      const cv::Mat edges = DepthEdgeMask(used.depth_mm, edge_threshold_mm);
+      diagnostics.coarse = PositionCoarsely(diagnostics.division, used.depth_mm, edges,
+                                            used.camera.fx, object.diameter_mm,
+                                            entry.edge_ranges, options.coarse);
+      result.timings.coarse_ms += MsSince(stage_start);
+
+      stage_start = Clock::now();
+      diagnostics.matches = MatchKeptBlocks(scene, archive, object, diagnostics, used.camera,
+                                            options);
+      result.timings.match_ms += MsSince(stage_start);
+    } else {
+      stage_start = Clock::now();
+      diagnostics.matches = MatchTemplates(scene, archive.TemplatesOf(object.obj_id), options.match);
+      result.timings.match_ms += MsSince(stage_start);
+    }
+
+    stage_start = Clock::now();
+    std::vector<Detection> detections =
+        PosesFromMatches(diagnostics.matches, archive, object, used, options);
+    result.timings.pose_ms += MsSince(stage_start);
+    for (Detection& detection : detections) result.detections.push_back(std::move(detection));
+    result.diagnostics.push_back(std::move(diagnostics));
+  }
+  std::stable_sort(result.detections.begin(), result.detections.end(),
+                   [](const Detection& a, const Detection& b) { return a.score > b.score; });
+  result.timings.total_ms = MsSince(start);
+  return result;
+}
+
+}  // namespace layermod

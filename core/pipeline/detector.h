@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/camera.h"
+#include "match/matcher.h"
+#include "pose/icp.h"
+#include "pose/verification.h"
+#include "scene/coarse_positioning.h"
+#include "scene/region_division.h"
+#include "templates/archive.h"
+
+namespace layermod {
+
+enum class DetectionMode {
+  kScenePatch,  // region division -> coarse positioning -> the layer's templates (paper §3.2-3.4)
+  kExhaustive,  // every template of every layer over the whole image (original LineMOD)
+  kColorOnly,   // LINE-2D: colour gradients only, exhaustive; for captures without depth
+};
+std::string_view ModeName(DetectionMode mode);
+DetectionMode ParseDetectionMode(std::string_view text);  // throws Error
+
+struct DetectorOptions {
+  DetectionMode mode = DetectionMode::kScenePatch;
+  RegionDivisionOptions regions;
+  CoarsePositioningOptions coarse;
+  MatchOptions match;
+  int max_instances = 1;    // detections kept per object
+  int pose_candidates = 8;  // best raw matches per object that get a pose and a verification
+  IcpOptions icp;
+  VerificationOptions verification;
+
+  void Validate() const;  // throws Error
+};
+
+// One RGB-D (or RGB) frame. Colour CV_8UC3 BGR; depth CV_32F mm with 0 = invalid, or empty.
+struct Capture {
+  cv::Mat color;
+  cv::Mat depth_mm;
+  PinholeCamera camera;
+};
+
+struct Detection {
+  std::int32_t obj_id = 0;
+  std::string name;
+  float score = 0.0f;  // LineMOD similarity of the matched template, percent
+  Pose cam_from_model;
+  std::uint32_t template_id = 0;
+  int layer_index = 0;
+  double layer_depth_mm = 0.0;
+  cv::Point box_tl_px;  // where the template matched (level-0 top-left)
+  IcpResult icp;        // iterations == 0 when not refined (no depth)
+  Verification verification;
+};
+
+struct StageTimings {
+  double prepare_ms = 0.0;  // quantization, spreading, response maps, linear memories
+  double regions_ms = 0.0;  // scene region division
+  double coarse_ms = 0.0;   // coarse positioning
+  double match_ms = 0.0;    // template matching
+  double pose_ms = 0.0;     // initial pose, ICP, verification
+  double total_ms = 0.0;
+};
+
+// What each stage saw, for overlays and the studio's preview.
+struct ObjectDiagnostics {
+  std::int32_t obj_id = 0;
+  RegionDivision division;       // empty in exhaustive / colour-only mode
+  CoarsePositioning coarse;
+  std::vector<RawMatch> matches;  // after NMS, before pose verification
+};
+
+struct DetectionResult {
+  std::vector<Detection> detections;  // best first
+  StageTimings timings;
+  std::vector<ObjectDiagnostics> diagnostics;
+};
+
+// Detects the objects of one or more archives in captures taken with the archives' camera.
+class Detector {
+ public:
+  // Throws Error when archives disagree on the camera or the feature parameters, or an object id
+  // appears twice.
+  explicit Detector(std::vector<TemplateArchive> archives);
+
+  // Throws Error for an unusable capture: sizes that differ from the camera, wrong pixel types,
+  // intrinsics other than the archives', depth required by the mode but absent.
+  DetectionResult Detect(const Capture& capture, const DetectorOptions& options) const;
+
+  const std::vector<TemplateArchive>& archives() const { return archives_; }
+  const PinholeCamera& camera() const { return archives_.front().camera(); }
+  const ArchiveObject& Object(std::int32_t obj_id) const;
+  const TemplateArchive& ArchiveOf(std::int32_t obj_id) const;
+
+ private:
+  struct ObjectEntry {
+    std::size_t archive = 0;
+    std::int32_t obj_id = 0;
+    std::vector<LayerEdgeRange> edge_ranges;  // per layer
+  };
+
+  std::vector<TemplateArchive> archives_;
+  std::vector<ObjectEntry> objects_;
+};
+
+}  // namespace layermod

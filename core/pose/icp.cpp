@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+#include "pose/icp.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "render/rasterizer.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+struct SurfaceSample {
+  Eigen::Vector3d point_in_model;
+  Eigen::Vector3d normal_in_model;
+};
+
+// Visible surface of the model at `pose`, sampled on a pixel grid of its render.
+std::vector<SurfaceSample> SampleVisibleSurface(const RenderMesh& mesh, const PinholeCamera& camera,
+                                                const Pose& pose, int step_px) {
+  const RenderedView view = RenderView(mesh, camera, pose);
+  std::vector<SurfaceSample> samples;
+  if (view.empty()) return samples;
+  const Pose model_from_cam = pose.Inverse();
+  for (int y = 0; y < view.depth_mm.rows; y += step_px) {
+    for (int x = 0; x < view.depth_mm.cols; x += step_px) {
+      const float depth = view.depth_mm.at<float>(y, x);
+      if (depth <= 0.0f) continue;
+      const cv::Vec3f normal = view.normals.at<cv::Vec3f>(y, x);
+      const Eigen::Vector3d point_in_cam = camera.Backproject(
+          Eigen::Vector2d(x + view.roi.x, y + view.roi.y), static_cast<double>(depth));
+      samples.push_back({model_from_cam * point_in_cam,
+                         model_from_cam.R * Eigen::Vector3d(normal[0], normal[1], normal[2])});
+    }
+  }
+  return samples;
+}
+
+// Scene point seen at the pixel where `point_in_cam` projects; false when none.
+bool SceneCorrespondence(const PinholeCamera& camera, const cv::Mat& depth_mm,
+                         const Eigen::Vector3d& point_in_cam, Eigen::Vector3d& scene_point) {
+  if (point_in_cam.z() <= 0.0) return false;
+  const Eigen::Vector2d pixel = camera.Project(point_in_cam);
+  const int u = static_cast<int>(std::lround(pixel.x()));
+  const int v = static_cast<int>(std::lround(pixel.y()));
+  if (u < 0 || v < 0 || u >= depth_mm.cols || v >= depth_mm.rows) return false;
+  const float depth = depth_mm.at<float>(v, u);
+  if (depth <= 0.0f) return false;
+  scene_point = camera.Backproject(Eigen::Vector2d(u, v), depth);
+  return true;
+}
+
+struct StepResult {
+  Eigen::Matrix<double, 6, 1> update = Eigen::Matrix<double, 6, 1>::Zero();
+  double squared_error = 0.0;
+  int inliers = 0;
+};
+
+// One Gauss-Newton step of point-to-plane alignment (model normals, small-angle linearisation).
+StepResult SolveStep(const std::vector<SurfaceSample>& samples, const Pose& pose,
+                     const PinholeCamera& camera, const cv::Mat& depth_mm, double gate_mm,
+                     double huber_mm) {
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  StepResult result;
+  for (const SurfaceSample& sample : samples) {
+    const Eigen::Vector3d point = pose * sample.point_in_model;
+    Eigen::Vector3d scene;
+    if (!SceneCorrespondence(camera, depth_mm, point, scene)) continue;
+    if ((point - scene).norm() > gate_mm) continue;
+    const Eigen::Vector3d normal = pose.R * sample.normal_in_model;
+    const double residual = normal.dot(point - scene);
+    Eigen::Matrix<double, 6, 1> jacobian;
+    jacobian << point.cross(normal), normal;
+    const double weight = std::abs(residual) <= huber_mm ? 1.0 : huber_mm / std::abs(residual);
+    normal_matrix += weight * jacobian * jacobian.transpose();
+    rhs -= weight * jacobian * residual;
+    result.squared_error += residual * residual;
+    ++result.inliers;
+  }
+  if (result.inliers >= 6) {
+    result.update = normal_matrix.ldlt().solve(rhs);
+    if (!result.update.allFinite()) result.update.setZero();
+  }
+  return result;
+}
+
+Pose ApplyUpdate(const Pose& pose, const Eigen::Matrix<double, 6, 1>& update) {
+  const Eigen::Vector3d omega = update.head<3>();
+  const double angle = omega.norm();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  if (angle > 1e-12) rotation = Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
+  return Pose{rotation, update.tail<3>()} * pose;
+}
+
+}  // namespace
+
+void IcpOptions::Validate() const {
+  if (max_iterations < 1 || renders < 1) throw Error("icp: iterations and renders must be >= 1");
+  if (!(final_max_distance_mm > 0.0) || !(initial_max_distance_mm >= final_max_distance_mm)) {
+    throw Error("icp: need 0 < final gate <= initial gate");
+  }
+  if (!(huber_mm > 0.0) || sample_step_px < 1 || !(convergence_mm >= 0.0)) {
+    throw Error("icp: huber scale and sampling step must be positive");
+  }
+}
+
+IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
+                        const cv::Mat& depth_mm, const Pose& initial, const IcpOptions& options) {
+  options.Validate();
+  if (depth_mm.type() != CV_32F || depth_mm.cols != camera.width || depth_mm.rows != camera.height) {
+    throw Error("icp: depth must be CV_32F mm of the camera's size");
+  }
+  IcpResult result;
+  result.cam_from_model = initial;
+  const int per_render = std::max(1, options.max_iterations / options.renders);
+  std::vector<SurfaceSample> samples;
+  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
+    if (iteration % per_render == 0) {
+      samples = SampleVisibleSurface(mesh, camera, result.cam_from_model, options.sample_step_px);
+      if (samples.empty()) return result;
+    }
+    // The gate shrinks geometrically: wide while the pose is rough, tight once it is close.
+    const double gate = std::max(options.final_max_distance_mm,
+                                 options.initial_max_distance_mm * std::pow(0.7, iteration));
+    const StepResult step = SolveStep(samples, result.cam_from_model, camera, depth_mm, gate,
+                                      options.huber_mm);
+    result.iterations = iteration + 1;
+    if (step.inliers < 6) break;
+    result.cam_from_model = ApplyUpdate(result.cam_from_model, step.update);
+    const double motion_mm = step.update.tail<3>().norm() + step.update.head<3>().norm() * 100.0;
+    if (motion_mm < options.convergence_mm && gate <= options.final_max_distance_mm) {
+      result.converged = true;
+      break;
+    }
+  }
+  const StepResult final_step = SolveStep(samples, result.cam_from_model, camera, depth_mm,
+                                          options.final_max_distance_mm, options.huber_mm);
+  result.inlier_ratio = samples.empty() ? 0.0
+                                        : static_cast<double>(final_step.inliers) / samples.size();
+  result.rmse_mm = final_step.inliers > 0 ? std::sqrt(final_step.squared_error / final_step.inliers)
+                                          : 0.0;
+  return result;
+}
+
+}  // namespace layermod

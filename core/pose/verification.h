@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "geometry/camera.h"
+#include "geometry/pose.h"
+#include "mesh/render_mesh.h"
+
+namespace layermod {
+
+// Rejects false positives by comparing the model rendered at the pose with the scene.
+struct VerificationOptions {
+  double depth_tolerance_mm = 15.0;  // |scene - model| within this: consistent
+  double min_depth_inlier_ratio = 0.6;
+  double min_visible_ratio = 0.3;    // consistent + occluded pixels over the silhouette
+  double hue_tolerance_deg = 30.0;
+  double min_color_agreement = 0.5;  // only judged when the model has saturated colours
+
+  void Validate() const;  // throws Error
+};
+
+struct Verification {
+  double depth_inlier_ratio = 0.0;  // consistent / (consistent + surface missing or behind)
+  double visible_ratio = 0.0;       // silhouette pixels not contradicted by the scene
+  double color_agreement = 1.0;     // saturated pixels whose hue matches (1 when not judged)
+  int silhouette_px = 0;
+  bool accepted = false;
+};
+
+// Depth consistency: on the model's silhouette, scene depth within tolerance is consistent, a
+// scene nearer than the model is an occluder (neither for nor against), a scene farther means the
+// object is not there. Colour check (Hinterstoisser ACCV 2012): hue agreement on pixels where
+// the model's colour is saturated. Without depth (empty `depth_mm`) only colour is judged.
+Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, const Pose& pose,
+                        const cv::Mat& depth_mm, const cv::Mat& color_bgr,
+                        const VerificationOptions& options = {});
+
+}  // namespace layermod

@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: MIT
+#include "match/matcher.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+
+#include "match_test_util.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+constexpr double kDensity = 0.1;
+
+PreparedScene Prepare(const test::TestScene& scene) {
+  return PreparedScene(scene.quantized, scene.spread_px);
+}
+
+cv::Point Centre(const cv::Rect& box) {
+  return box.tl() + cv::Point(box.width / 2, box.height / 2);
+}
+
+std::vector<RawMatch> Match(const PreparedScene& scene, const std::vector<TemplateRecord>& records,
+                            const MatchOptions& options = {},
+                            const std::vector<cv::Point>* points = nullptr, int radius = 0) {
+  return MatchTemplates(scene, records, options, points, radius);
+}
+
+TEST(MatcherTest, FindsATemplateAtItsExactPositionInteriorAndAtBorders) {
+  cv::RNG rng(61);
+  for (const cv::Size size : {cv::Size(640, 480), cv::Size(203, 157)}) {
+    test::TestScene scene = test::RandomScene(size, kDensity, rng);
+    const PreparedScene prepared = Prepare(scene);
+    const cv::Size box_size(61, 47);
+    for (const cv::Point tl :
+         {cv::Point(71, 43), cv::Point(0, 0),
+          cv::Point(size.width - box_size.width, size.height - box_size.height),
+          cv::Point(size.width - box_size.width, 0)}) {
+      const std::vector<TemplateRecord> records = {
+          test::TemplateFromScene(scene, {tl, box_size}, 63, 7, rng)};
+      const std::vector<RawMatch> matches = Match(prepared, records);
+      ASSERT_FALSE(matches.empty()) << size << " at " << tl;
+      EXPECT_EQ(matches[0].x, tl.x) << size;
+      EXPECT_EQ(matches[0].y, tl.y) << size;
+      EXPECT_FLOAT_EQ(matches[0].similarity_percent, 100.0f);
+      EXPECT_EQ(matches[0].template_id, 7u);
+    }
+  }
+}
+
+TEST(MatcherTest, EightBitTemplatesAndSingleLevelTemplatesAreFoundToo) {
+  cv::RNG rng(62);
+  test::TestScene scene = test::RandomScene({300, 200}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  const cv::Rect box(97, 61, 50, 40);
+  TemplateRecord small = test::TemplateFromScene(scene, box, 20, 1, rng);
+  TemplateRecord single = test::TemplateFromScene(scene, box + cv::Point(1, 1), 63, 2, rng);
+  single.levels.resize(1);
+  for (const TemplateRecord& record : {small, single}) {
+    const auto matches = Match(prepared, {record});
+    ASSERT_FALSE(matches.empty()) << record.id;
+    EXPECT_EQ(cv::Point(matches[0].x, matches[0].y), record.bbox_px.tl()) << record.id;
+    EXPECT_FLOAT_EQ(matches[0].similarity_percent, 100.0f);
+  }
+}
+
+TEST(MatcherTest, RgbOnlySceneScoresColourFeaturesOnly) {
+  cv::RNG rng(63);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  const TemplateRecord record = test::TemplateFromScene(scene, {150, 90, 60, 50}, 63, 3, rng);
+  for (auto& level : scene.quantized) level[ModalityIndex(Modality::kDepthNormal)] = cv::Mat();
+  const auto matches = Match(Prepare(scene), {record});
+  ASSERT_FALSE(matches.empty());
+  EXPECT_EQ(cv::Point(matches[0].x, matches[0].y), cv::Point(150, 90));
+  EXPECT_FLOAT_EQ(matches[0].similarity_percent, 100.0f);
+}
+
+TEST(MatcherTest, LinearMemoriesAreBuiltOnlyForTheLevelsSearchedOnTheGrid) {
+  cv::RNG rng(70);
+  test::TestScene scene = test::RandomScene({200, 150}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  EXPECT_FALSE(prepared.Level(0).linearized);
+  EXPECT_FALSE(prepared.Level(1).linearized);
+  const TemplateRecord record = test::TemplateFromScene(scene, {20, 30, 50, 40}, 63, 1, rng);
+  EXPECT_EQ(Match(prepared, {record}).size(), 1u);
+  EXPECT_FALSE(prepared.Level(0).linearized);
+  EXPECT_TRUE(prepared.Level(1).linearized);
+  EXPECT_TRUE(prepared.LinearizedLevel(0).linearized);
+}
+
+TEST(MatcherTest, CandidatePointsRestrictTheSearch) {
+  cv::RNG rng(64);
+  test::TestScene scene = test::RandomScene({640, 480}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  const cv::Rect box(400, 250, 70, 60);
+  const std::vector<TemplateRecord> records = {test::TemplateFromScene(scene, box, 63, 5, rng)};
+
+  const std::vector<cv::Point> near = {{30, 30}, Centre(box) + cv::Point(9, -7)};
+  auto matches = Match(prepared, records, {}, &near, 12);
+  ASSERT_EQ(matches.size(), 1u);
+  EXPECT_EQ(cv::Point(matches[0].x, matches[0].y), box.tl());
+
+  const std::vector<cv::Point> far = {{30, 30}, Centre(box) + cv::Point(80, 0), {600, 60}};
+  EXPECT_TRUE(Match(prepared, records, {}, &far, 12).empty());
+  const std::vector<cv::Point> none;
+  EXPECT_TRUE(Match(prepared, records, {}, &none, 50).empty());
+  EXPECT_THROW(Match(prepared, records, {}, &near, -1), Error);
+}
+
+TEST(MatcherTest, ThresholdRejectsAPartlyWrongTemplate) {
+  cv::RNG rng(65);
+  test::TestScene scene = test::RandomScene({320, 240}, 0.05, rng);
+  const PreparedScene prepared = Prepare(scene);
+  const cv::Rect box(100, 80, 64, 64);
+  TemplateRecord record = test::TemplateFromScene(scene, box, 63, 9, rng);
+  // Turn half of the features at every level by 90 deg (4 bins): they no longer match.
+  for (TemplateLevel& level : record.levels) {
+    for (std::size_t i = 0; i < level.features.size(); i += 2) {
+      level.features[i].label = static_cast<std::uint8_t>((level.features[i].label + 4) % 8);
+    }
+  }
+  MatchOptions strict;
+  strict.threshold_percent = 90.0f;
+  EXPECT_TRUE(Match(prepared, {record}, strict).empty());
+  MatchOptions lenient;
+  lenient.threshold_percent = 45.0f;
+  const auto matches = Match(prepared, {record}, lenient);
+  ASSERT_FALSE(matches.empty());
+  EXPECT_NEAR(matches[0].x, box.x, 5);
+  EXPECT_NEAR(matches[0].y, box.y, 5);
+  for (const RawMatch& match : matches) {
+    EXPECT_GE(match.similarity_percent, 45.0f);
+    EXPECT_LT(match.similarity_percent, 90.0f);
+  }
+}
+
+TEST(MatcherTest, NonMaximumSuppressionKeepsTheBestPerObjectAndPlace) {
+  cv::RNG rng(66);
+  test::TestScene scene = test::RandomScene({400, 300}, kDensity, rng);
+  const cv::Rect box(50, 60, 60, 50);
+  test::CopyPatch(scene, box, {250, 180});  // a second instance far away
+  const PreparedScene prepared = Prepare(scene);
+  TemplateRecord first = test::TemplateFromScene(scene, box, 63, 4, rng);
+  TemplateRecord twin = first;  // same view again: a duplicate at each place
+  twin.id = 2;
+  const auto same_object = Match(prepared, {first, twin});
+  ASSERT_EQ(same_object.size(), 2u);  // one per instance, the lower id wins the tie
+  for (const RawMatch& match : same_object) EXPECT_EQ(match.template_id, 2u);
+  EXPECT_EQ(cv::Point(same_object[0].x, same_object[0].y), box.tl());
+  EXPECT_EQ(cv::Point(same_object[1].x, same_object[1].y), cv::Point(250, 180));
+
+  twin.obj_id = 1;  // another object: never suppressed by the first
+  EXPECT_EQ(Match(prepared, {first, twin}).size(), 4u);
+
+  MatchOptions wide;
+  wide.nms_radius_px = 400;  // everything of one object is one detection
+  EXPECT_EQ(Match(prepared, {first}, wide).size(), 1u);
+  MatchOptions capped;
+  capped.max_matches = 1;
+  EXPECT_EQ(Match(prepared, {first, twin}, capped).size(), 1u);
+}
+
+TEST(MatcherTest, OutputIsSortedAndDeterministic) {
+  cv::RNG rng(67);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  std::vector<TemplateRecord> records;
+  for (std::uint32_t id = 0; id < 24; ++id) {
+    const cv::Rect box(rng.uniform(0, 260), rng.uniform(0, 190), 50, 40);
+    records.push_back(test::TemplateFromScene(scene, box, 30, id, rng));
+    records.back().obj_id = static_cast<int>(id);
+  }
+  MatchOptions options;
+  options.threshold_percent = 60.0f;
+  const auto matches = Match(prepared, records, options);
+  ASSERT_GE(matches.size(), records.size());
+  EXPECT_TRUE(
+      std::is_sorted(matches.begin(), matches.end(), [](const RawMatch& a, const RawMatch& b) {
+        return std::tie(b.similarity_percent, a.template_id, a.y, a.x) <
+               std::tie(a.similarity_percent, b.template_id, b.y, b.x);
+      }));
+  for (int run = 0; run < 3; ++run) EXPECT_EQ(Match(prepared, records, options), matches);
+  {
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(Match(prepared, records, options), matches);
+  }
+  // Every SIMD path, in scene preparation and in matching, gives the same answer.
+  for (SimdPath path : SupportedSimdPaths()) {
+    MatchOptions forced = options;
+    forced.simd = path;
+    EXPECT_EQ(Match(PreparedScene(scene.quantized, scene.spread_px, path), records, forced),
+              matches)
+        << SimdPathName(path);
+  }
+}
+
+TEST(MatcherTest, NothingToMatchGivesNoMatchesAndNoCrash) {
+  cv::RNG rng(68);
+  test::TestScene scene = test::RandomScene({120, 90}, kDensity, rng);
+  const TemplateRecord record = test::TemplateFromScene(scene, {10, 10, 40, 30}, 63, 1, rng);
+  EXPECT_TRUE(Match(PreparedScene(), {record}).empty());
+  EXPECT_TRUE(Match(Prepare(scene), {}).empty());
+  // A scene with no modality at all, and an all-zero scene.
+  EXPECT_TRUE(Match(PreparedScene({{cv::Mat(), cv::Mat()}}, {5}), {record}).empty());
+  const cv::Mat zeros = cv::Mat::zeros(90, 120, CV_8UC1);
+  EXPECT_TRUE(Match(PreparedScene({{zeros, zeros}}, {5}), {record}).empty());
+
+  TemplateRecord empty = record;
+  for (TemplateLevel& level : empty.levels) level.features.clear();
+  TemplateRecord no_levels = record;
+  no_levels.levels.clear();
+  TemplateRecord weak = record;
+  weak.status = TemplateStatus::kTooFewFeatures;
+  TemplateRecord huge = record;
+  huge.levels[0].width = 500;
+  EXPECT_TRUE(Match(Prepare(scene), {empty, no_levels, weak, huge}).empty());
+}
+
+TEST(MatcherTest, BadInputsThrowClearErrors) {
+  cv::RNG rng(69);
+  test::TestScene scene = test::RandomScene({120, 90}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  TemplateRecord record = test::TemplateFromScene(scene, {10, 10, 40, 30}, 63, 42, rng);
+  record.levels[0].features[0].label = 9;
+  try {
+    Match(prepared, {record});
+    FAIL() << "expected Error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("template 42"), std::string::npos) << error.what();
+  }
+  MatchOptions options;
+  options.threshold_percent = 0.0f;
+  EXPECT_THROW(options.Validate(), Error);
+  options = {};
+  options.nms_radius_px = -1;
+  EXPECT_THROW(options.Validate(), Error);
+  options = {};
+  options.max_matches = 0;
+  EXPECT_THROW(options.Validate(), Error);
+  options = {};
+  options.max_candidates_per_template = 0;
+  EXPECT_THROW(options.Validate(), Error);
+  EXPECT_NO_THROW(MatchOptions().Validate());
+  EXPECT_THROW(PreparedScene(scene.quantized, {5}), Error);  // one T for two levels
+  EXPECT_THROW(prepared.Level(2), Error);
+}
+
+}  // namespace
+}  // namespace layermod

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#include "pose/icp.h"
+
+#include <gtest/gtest.h>
+
+#include "pose/pose_test_scene.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+
+TEST(IcpTest, RecoversAPerturbedPose) {
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const Pose start = test::Perturb(truth, 4.0, {1, 2, 0.5}, {6.0, -5.0, 10.0});
+  const IcpResult result =
+      RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), scene.depth_mm, start);
+  EXPECT_LT((result.cam_from_model.t - truth.t).norm(), 1.5);
+  EXPECT_LT(test::RotationErrorDeg(result.cam_from_model, truth), 0.5);
+  EXPECT_GT(result.inlier_ratio, 0.9);
+  EXPECT_LT(result.rmse_mm, 1.0);
+}
+
+TEST(IcpTest, ExactPoseStaysPut) {
+  const Pose truth = test::SamplePose(1000.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const IcpResult result =
+      RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), scene.depth_mm, truth);
+  EXPECT_LT((result.cam_from_model.t - truth.t).norm(), 0.3);
+  EXPECT_LT(test::RotationErrorDeg(result.cam_from_model, truth), 0.1);
+  EXPECT_TRUE(result.converged);
+}
+
+TEST(IcpTest, NoDepthLeavesThePoseAndReportsNoInliers) {
+  const Pose truth = test::SamplePose(800.0);
+  const cv::Mat empty_depth = cv::Mat::zeros(480, 640, CV_32F);
+  const IcpResult result =
+      RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), empty_depth, truth);
+  EXPECT_EQ(result.inlier_ratio, 0.0);
+  EXPECT_FALSE(result.converged);
+  EXPECT_LT((result.cam_from_model.t - truth.t).norm(), 1e-9);
+}
+
+TEST(IcpTest, RejectsBadInputs) {
+  const Pose truth = test::SamplePose(800.0);
+  EXPECT_THROW(RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(),
+                             cv::Mat::zeros(10, 10, CV_32F), truth),
+               Error);
+  IcpOptions options;
+  options.final_max_distance_mm = 100.0;  // above the initial gate
+  const test::TestScene scene = test::RenderTestScene(truth);
+  EXPECT_THROW(RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), scene.depth_mm, truth,
+                             options),
+               Error);
+}
+
+}  // namespace
+}  // namespace layermod

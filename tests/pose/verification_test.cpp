@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+#include "pose/verification.h"
+
+#include <gtest/gtest.h>
+
+#include "pose/pose_test_scene.h"
+
+namespace layermod {
+namespace {
+
+TEST(VerificationTest, AcceptsTheTruePose) {
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const Verification result = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth,
+                                         scene.depth_mm, scene.color);
+  EXPECT_TRUE(result.accepted);
+  EXPECT_GT(result.depth_inlier_ratio, 0.98);
+  EXPECT_GT(result.visible_ratio, 0.98);
+}
+
+TEST(VerificationTest, RejectsAPoseWhereTheObjectIsNot) {
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const Pose elsewhere = test::Perturb(truth, 0.0, {0, 0, 1}, {150.0, 0.0, 0.0});
+  const Verification result = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), elsewhere,
+                                         scene.depth_mm, scene.color);
+  EXPECT_FALSE(result.accepted);
+  EXPECT_LT(result.depth_inlier_ratio, 0.3);
+}
+
+TEST(VerificationTest, OccludersAreNotCountedAgainstThePose) {
+  const Pose truth = test::SamplePose(800.0);
+  test::TestScene scene = test::RenderTestScene(truth);
+  // A bar in front of the left half of the image.
+  scene.depth_mm(cv::Rect(0, 0, 330, 480)).setTo(500.0f);
+  const Verification result = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth,
+                                         scene.depth_mm, scene.color);
+  EXPECT_GT(result.depth_inlier_ratio, 0.98);  // occluded pixels are neither for nor against
+  EXPECT_GT(result.visible_ratio, 0.98);
+}
+
+TEST(VerificationTest, ColourDisagreementRejectsASaturatedModel) {
+  // A saturated red model against a scene whose pixels are blue at the same depth.
+  RenderMesh red = test::SampleRenderMesh();
+  for (auto& color : red.colors) color = Eigen::Vector3f(0.9f, 0.1f, 0.1f);
+  const Pose truth = test::SamplePose(800.0);
+  test::TestScene scene = test::RenderTestScene(truth);
+  scene.color.setTo(cv::Scalar(200, 40, 40));  // BGR blue
+  const Verification result =
+      VerifyPose(red, test::VgaCamera(), truth, scene.depth_mm, scene.color);
+  EXPECT_LT(result.color_agreement, 0.1);
+  EXPECT_FALSE(result.accepted);
+}
+
+}  // namespace
+}  // namespace layermod

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QMainWindow>
+
+namespace layermod::ui {
+
+class JobRunner;
+class LogDock;
+class ModelPanel;
+class SceneView;
+class StudioFiles;
+class StudioSession;
+class TemplateBrowser;
+class TrainingPanel;
+class ViewsPanel;
+
+// Creates the panels around the 3D view and wires them; the work lives in the panels.
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  StudioSession* session() const { return session_; }
+  JobRunner* runner() const { return runner_; }
+  SceneView* scene() const { return scene_; }
+  ModelPanel* model_panel() const { return model_panel_; }
+  ViewsPanel* views_panel() const { return views_panel_; }
+  TrainingPanel* training_panel() const { return training_panel_; }
+  TemplateBrowser* browser() const { return browser_; }
+  LogDock* log_dock() const { return log_dock_; }
+  StudioFiles* files() const { return files_; }
+
+  // Meshes and *.layermod archives, opened in order (command line, drops).
+  void OpenFiles(const QStringList& paths);
+  // No job runs, no file waits, no thumbnail is being rendered.
+  bool IsIdle() const;
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+ private:
+  QDockWidget* AddDock(QWidget* panel, const QString& title, const char* name,
+                       Qt::DockWidgetArea area);
+  void Wire();
+  void ShowSelectedCamera(int template_index);
+
+  StudioSession* session_;
+  JobRunner* runner_;
+  SceneView* scene_;
+  LogDock* log_dock_;
+  ModelPanel* model_panel_;
+  ViewsPanel* views_panel_;
+  TrainingPanel* training_panel_;
+  TemplateBrowser* browser_;
+  StudioFiles* files_ = nullptr;
+};
+
+}  // namespace layermod::ui

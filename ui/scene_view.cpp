@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+#include "ui/scene_view.h"
+
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMapper.h>
+#include <vtkOrientationMarkerWidget.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+
+#include <cmath>
+
+#include "ui/scene_actors.h"
+
+namespace layermod::ui {
+namespace {
+
+// Direction the default view looks from (object +Z up), as a CAD viewer's isometric view.
+constexpr ViewAngles kHomeView{-60.0, 25.0, 0.0};
+constexpr double kHomeViewAngleDeg = 30.0;
+
+}  // namespace
+
+SceneView::SceneView(QWidget* parent) : QVTKOpenGLNativeWidget(parent) {
+  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  setRenderWindow(window);
+  renderer_ = vtkSmartPointer<vtkRenderer>::New();
+  renderer_->SetBackground(0.13, 0.14, 0.17);
+  renderer_->SetBackground2(0.32, 0.34, 0.40);
+  renderer_->GradientBackgroundOn();
+  window->AddRenderer(renderer_);
+  auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+  interactor()->SetInteractorStyle(style);
+
+  auto marker_axes = vtkSmartPointer<vtkAxesActor>::New();
+  orientation_ = vtkSmartPointer<vtkOrientationMarkerWidget>::New();
+  orientation_->SetOrientationMarker(marker_axes);
+  orientation_->SetInteractor(interactor());
+  orientation_->SetViewport(0.0, 0.0, 0.16, 0.22);
+  orientation_->SetEnabled(1);
+  orientation_->InteractiveOff();
+  setMinimumSize(320, 240);
+}
+
+SceneView::~SceneView() = default;
+
+void SceneView::RemoveModelActors() {
+  for (const auto& prop : model_props_) renderer_->RemoveViewProp(prop);
+  model_props_.clear();
+  sphere_ = nullptr;
+}
+
+void SceneView::SetModel(std::shared_ptr<const Model> model) {
+  RemoveModelActors();
+  ClearHighlight();
+  model_ = std::move(model);
+  if (model_ != nullptr) {
+    sphere_ = MakeSphereActor(model_->sphere);
+    sphere_->SetVisibility(sphere_visible_);
+    model_props_ = {MakeMeshActor(*model_), sphere_, MakeCentreMarker(model_->sphere),
+                    MakeAxesActor(model_->sphere.radius * 0.8)};
+    for (const auto& prop : model_props_) renderer_->AddViewProp(prop);
+  }
+  ResetCamera();
+}
+
+void SceneView::SetCoverage(const std::vector<double>& layer_depths_mm,
+                            const std::vector<ViewAngles>& views) {
+  if (coverage_ != nullptr) renderer_->RemoveViewProp(coverage_);
+  if (scalar_bar_ != nullptr) renderer_->RemoveViewProp(scalar_bar_);
+  coverage_ = nullptr;
+  scalar_bar_ = nullptr;
+  coverage_glyphs_ = 0;
+  if (model_ != nullptr) {
+    coverage_ = MakeCoverageActor(model_->sphere, layer_depths_mm, views, &coverage_glyphs_);
+  }
+  if (coverage_ != nullptr) {
+    scalar_bar_ = MakeDepthScalarBar(coverage_);
+    coverage_->SetVisibility(coverage_visible_);
+    scalar_bar_->SetVisibility(coverage_visible_);
+    renderer_->AddViewProp(coverage_);
+    renderer_->AddViewProp(scalar_bar_);
+  }
+  Render();
+}
+
+void SceneView::ShowTemplateCamera(const TemplateRecord& record, const PinholeCamera& camera,
+                                   const std::vector<double>& layer_depths_mm) {
+  if (model_ == nullptr || layer_depths_mm.empty()) return;
+  ClearHighlight();
+  const Sphere& sphere = model_->sphere;
+  highlight_ = MakeHighlightActor(
+      sphere, GlyphPosition(sphere, record.view, record.layer_depth_mm, layer_depths_mm.front()));
+  renderer_->AddViewProp(highlight_);
+
+  // The VTK camera takes the template's pose and vertical field of view, so the model appears
+  // as in the template's render. The clipping range keeps only the model's depth, which hides
+  // the glyphs between that camera and the model until the user moves the view.
+  const Pose& pose = record.cam_from_model;
+  const Eigen::Vector3d position = -(pose.R.transpose() * pose.t);
+  const Eigen::Vector3d forward = pose.R.transpose() * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d up = -(pose.R.transpose() * Eigen::Vector3d::UnitY());
+  const double distance_mm = (sphere.centre - position).dot(forward);
+  const Eigen::Vector3d focal = position + forward * distance_mm;
+  vtkCamera* vtk_camera = renderer_->GetActiveCamera();
+  vtk_camera->SetPosition(position.data());
+  vtk_camera->SetFocalPoint(focal.data());
+  vtk_camera->SetViewUp(up.data());
+  if (camera.fy > 0.0 && camera.height > 0) {
+    vtk_camera->SetViewAngle(RadToDeg(2.0 * std::atan(0.5 * camera.height / camera.fy)));
+  }
+  vtk_camera->SetClippingRange(std::max(distance_mm - 1.5 * sphere.radius, 1.0),
+                               distance_mm + 1.5 * sphere.radius);
+  Render();
+}
+
+void SceneView::ClearHighlight() {
+  if (highlight_ != nullptr) renderer_->RemoveViewProp(highlight_);
+  highlight_ = nullptr;
+}
+
+void SceneView::ResetCamera() {
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetViewAngle(kHomeViewAngleDeg);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  const Eigen::Vector3d direction(
+      std::cos(DegToRad(kHomeView.elevation_deg)) * std::cos(DegToRad(kHomeView.azimuth_deg)),
+      std::cos(DegToRad(kHomeView.elevation_deg)) * std::sin(DegToRad(kHomeView.azimuth_deg)),
+      std::sin(DegToRad(kHomeView.elevation_deg)));
+  if (model_ == nullptr) {
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(direction.data());
+    renderer_->ResetCamera();
+  } else {
+    // Centred on the sphere; with coverage, the near layers fill the view and the far ones run
+    // off its edges (zoom out to see them), otherwise the model does.
+    const Sphere& sphere = model_->sphere;
+    const double fit_radius_mm = sphere.radius * (coverage_ != nullptr ? 4.5 : 1.3);
+    const double distance_mm = fit_radius_mm / std::sin(DegToRad(kHomeViewAngleDeg / 2.0));
+    const Eigen::Vector3d position = sphere.centre + distance_mm * direction;
+    camera->SetFocalPoint(sphere.centre.data());
+    camera->SetPosition(position.data());
+  }
+  renderer_->ResetCameraClippingRange();
+  Render();
+}
+
+void SceneView::SetCoverageVisible(bool visible) {
+  coverage_visible_ = visible;
+  if (coverage_ != nullptr) coverage_->SetVisibility(visible);
+  if (scalar_bar_ != nullptr) scalar_bar_->SetVisibility(visible);
+  Render();
+}
+
+void SceneView::SetSphereVisible(bool visible) {
+  sphere_visible_ = visible;
+  if (sphere_ != nullptr) sphere_->SetVisibility(visible);
+  Render();
+}
+
+void SceneView::Render() { renderWindow()->Render(); }
+
+}  // namespace layermod::ui

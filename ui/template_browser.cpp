@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: MIT
+#include "ui/template_browser.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QListView>
+#include <QPixmap>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <exception>
+
+#include "ui/archive_mesh.h"
+#include "ui/image_convert.h"
+#include "ui/studio_session.h"
+#include "ui/template_list_model.h"
+#include "ui/template_thumbnail.h"
+
+namespace layermod::ui {
+namespace {
+
+constexpr int kDetailPx = 320;
+
+QDoubleSpinBox* AngleBox(double min_deg, double max_deg, double value_deg, const char* name) {
+  auto* box = new QDoubleSpinBox;
+  box->setObjectName(name);
+  box->setRange(min_deg, max_deg);
+  box->setValue(value_deg);
+  box->setDecimals(0);
+  box->setSuffix("°");
+  return box;
+}
+
+}  // namespace
+
+TemplateBrowser::TemplateBrowser(StudioSession* session, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      model_(new TemplateListModel(this)),
+      list_(new QListView),
+      count_(new QLabel),
+      mesh_banner_(new QWidget),
+      mesh_banner_text_(new QLabel),
+      detail_image_(new QLabel),
+      detail_text_(new QLabel) {
+  list_->setObjectName("templateList");
+  list_->setModel(model_);
+  list_->setViewMode(QListView::IconMode);
+  list_->setIconSize(QSize(TemplateListModel::kThumbnailPx, TemplateListModel::kThumbnailPx));
+  list_->setGridSize(
+      QSize(TemplateListModel::kThumbnailPx + 12, TemplateListModel::kThumbnailPx + 24));
+  list_->setUniformItemSizes(true);
+  list_->setResizeMode(QListView::Adjust);
+  list_->setMovement(QListView::Static);
+  list_->setLayoutMode(QListView::Batched);  // stays responsive with 20k templates
+  list_->setSelectionMode(QAbstractItemView::SingleSelection);
+  count_->setObjectName("templateCount");
+
+  auto* open_mesh = new QPushButton(tr("Open mesh…"));
+  auto* banner_layout = new QHBoxLayout(mesh_banner_);
+  banner_layout->setContentsMargins(4, 4, 4, 4);
+  mesh_banner_text_->setWordWrap(true);
+  banner_layout->addWidget(mesh_banner_text_, 1);
+  banner_layout->addWidget(open_mesh);
+  mesh_banner_->setStyleSheet("background: #3a3f4b;");
+
+  detail_image_->setObjectName("detailImage");
+  detail_image_->setFixedSize(kDetailPx, kDetailPx);
+  detail_image_->setAlignment(Qt::AlignCenter);
+  detail_image_->setStyleSheet("background: black;");
+  detail_text_->setObjectName("detailText");
+  detail_text_->setWordWrap(true);
+  detail_text_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  detail_text_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* detail = new QHBoxLayout;
+  detail->addWidget(detail_image_);
+  detail->addWidget(detail_text_, 1);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(BuildFilterRow());
+  layout->addWidget(mesh_banner_);
+  layout->addWidget(list_, 1);
+  layout->addLayout(detail);
+
+  connect(open_mesh, &QPushButton::clicked, this, &TemplateBrowser::OpenMeshRequested);
+  connect(list_, &QListView::clicked, this,
+          [this](const QModelIndex& index) { SelectRow(index.row()); });
+  connect(session_, &StudioSession::ArchiveChanged, this, &TemplateBrowser::Refresh);
+  connect(session_, &StudioSession::ModelChanged, this, &TemplateBrowser::Refresh);
+  Refresh();
+}
+
+QWidget* TemplateBrowser::BuildFilterRow() {
+  layer_ = new QComboBox;
+  layer_->setObjectName("layerFilter");
+  elevation_min_ = AngleBox(-90, 90, -90, "elevationMinFilter");
+  elevation_max_ = AngleBox(-90, 90, 90, "elevationMaxFilter");
+  roll_min_ = AngleBox(-180, 180, -180, "rollMinFilter");
+  roll_max_ = AngleBox(-180, 180, 180, "rollMaxFilter");
+  auto* row = new QWidget;
+  auto* grid = new QGridLayout(row);
+  grid->setContentsMargins(0, 0, 0, 0);
+  grid->addWidget(new QLabel(tr("Layer")), 0, 0);
+  grid->addWidget(layer_, 0, 1, 1, 3);
+  grid->addWidget(count_, 0, 4);
+  grid->addWidget(new QLabel(tr("Elevation")), 1, 0);
+  grid->addWidget(elevation_min_, 1, 1);
+  grid->addWidget(elevation_max_, 1, 2);
+  grid->addWidget(new QLabel(tr("Roll")), 1, 3, Qt::AlignRight);
+  grid->addWidget(roll_min_, 1, 4);
+  grid->addWidget(roll_max_, 1, 5);
+  connect(layer_, qOverload<int>(&QComboBox::currentIndexChanged), this,
+          &TemplateBrowser::ApplyFilter);
+  for (QDoubleSpinBox* box : {elevation_min_, elevation_max_, roll_min_, roll_max_}) {
+    box->setKeyboardTracking(false);
+    connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+            &TemplateBrowser::ApplyFilter);
+  }
+  return row;
+}
+
+bool TemplateBrowser::has_mesh() const { return model_->mesh() != nullptr; }
+
+void TemplateBrowser::Refresh() {
+  const auto archive = session_->archive();
+  const auto model = session_->model();
+  std::shared_ptr<const RenderMesh> mesh;
+  std::int32_t mesh_obj_id = 0;
+  QString missing;
+  if (archive != nullptr && !archive->manifest().objects.empty()) {
+    const ArchiveObject& object = archive->manifest().objects.front();
+    mesh_obj_id = object.obj_id;
+    if (model != nullptr && ModelMatchesObject(*model, object)) {
+      mesh = std::make_shared<const RenderMesh>(ToRenderMesh(*model));
+    } else {
+      missing = QString::fromStdString(object.mesh_file);
+    }
+  }
+  mesh_banner_text_->setText(
+      tr("The mesh “%1” this set was trained from is not loaded: thumbnails show the features "
+         "alone.")
+          .arg(missing));
+  mesh_banner_->setVisible(!missing.isEmpty());
+  model_->SetArchive(archive, mesh, mesh_obj_id);
+  FillLayers();
+  ApplyFilter();
+  ShowDetail(-1);
+}
+
+void TemplateBrowser::FillLayers() {
+  const QSignalBlocker blocker(layer_);
+  layer_->clear();
+  layer_->addItem(tr("All layers"), -1);
+  const auto archive = session_->archive();
+  if (archive == nullptr || archive->manifest().objects.empty()) return;
+  const auto& depths = archive->manifest().objects.front().layer_depths_mm;
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    layer_->addItem(tr("Layer %1 — %2 mm").arg(i).arg(depths[i], 0, 'f', 0), static_cast<int>(i));
+  }
+}
+
+void TemplateBrowser::ApplyFilter() {
+  TemplateFilter filter;
+  filter.layer_index = layer_->currentData().isValid() ? layer_->currentData().toInt() : -1;
+  filter.elevation_min_deg = elevation_min_->value();
+  filter.elevation_max_deg = elevation_max_->value();
+  filter.roll_min_deg = roll_min_->value();
+  filter.roll_max_deg = roll_max_->value();
+  model_->SetFilter(filter);
+  const auto archive = model_->archive();
+  const std::size_t total = archive == nullptr ? 0 : archive->templates().size();
+  count_->setText(tr("%1 of %2 templates").arg(model_->rowCount()).arg(total));
+}
+
+void TemplateBrowser::SelectRow(int row) {
+  const TemplateRecord* record = model_->RecordAt(row);
+  if (record == nullptr) return;
+  list_->setCurrentIndex(model_->index(row));
+  ShowDetail(row);
+  emit TemplateSelected(model_->TemplateIndexAt(row));
+}
+
+void TemplateBrowser::ShowDetail(int row) {
+  const TemplateRecord* record = model_->RecordAt(row);
+  if (record == nullptr) {
+    detail_image_->clear();
+    detail_text_->setText(
+        tr("Click a template to enlarge it and to see its camera in the 3D "
+           "view.<br><span style='color:#4cff4c'>●</span> colour-gradient "
+           "features &nbsp;<span style='color:#ff3b3b'>●</span> normal "
+           "features"));
+    return;
+  }
+  cv::Mat image;
+  try {
+    image = RenderTemplateImage(*record, model_->archive()->camera(), model_->MeshFor(*record));
+  } catch (const std::exception&) {
+    // Shown as an empty image; the text still describes the template.
+  }
+  detail_image_->setPixmap(QPixmap::fromImage(ToQImage(FitInSquare(image, kDetailPx))));
+  const QString tooltip = model_->data(model_->index(row), Qt::ToolTipRole).toString();
+  detail_text_->setText(tooltip.toHtmlEscaped().replace("\n", "<br>") +
+                        tr("<br><br><span style='color:#4cff4c'>●</span> colour gradient "
+                           "(tick: orientation)<br><span style='color:#ff3b3b'>●</span> "
+                           "normal (blue tick: direction)"));
+}
+
+}  // namespace layermod::ui

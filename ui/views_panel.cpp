@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: MIT
+#include "ui/views_panel.h"
+
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <exception>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "ui/camera_form.h"
+#include "ui/studio_dialogs.h"
+#include "ui/studio_session.h"
+
+namespace layermod::ui {
+namespace {
+
+// Long enough to let someone type "1500" without four re-plans and glyph rebuilds.
+constexpr int kDebounceMs = 200;
+
+QDoubleSpinBox* NumberBox(double min, double max, const QString& suffix, int decimals = 1) {
+  auto* box = new QDoubleSpinBox;
+  box->setRange(min, max);
+  box->setDecimals(decimals);
+  box->setSuffix(suffix);
+  return box;
+}
+
+QSpinBox* CountBox(const char* name) {
+  auto* box = new QSpinBox;
+  box->setObjectName(name);
+  box->setRange(0, 4096);
+  return box;
+}
+
+AngleRange* RangeOf(ViewSamplingOptions& views, int row) {
+  return row == 0 ? &views.azimuth : row == 1 ? &views.elevation : &views.roll;
+}
+
+}  // namespace
+
+ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
+    : QWidget(parent), session_(session), camera_(new CameraForm), debounce_(new QTimer(this)) {
+  plan_label_ = new QLabel;
+  plan_label_->setObjectName("planLabel");
+  plan_label_->setWordWrap(true);
+  plan_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* camera_box = new QGroupBox(tr("Camera (pinhole, as the sensor)"));
+  (new QVBoxLayout(camera_box))->addWidget(camera_);
+  auto* save = new QPushButton(tr("Save profile…"));
+  auto* load = new QPushButton(tr("Load profile…"));
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(load);
+  buttons->addWidget(save);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(BuildDepthBox());
+  layout->addWidget(BuildViewsBox());
+  layout->addWidget(BuildFeaturesBox());
+  layout->addWidget(camera_box);
+  layout->addWidget(plan_label_);
+  layout->addLayout(buttons);
+  layout->addStretch();
+  SetProfile(TrainingProfile{});
+
+  debounce_->setSingleShot(true);
+  debounce_->setInterval(kDebounceMs);
+  connect(debounce_, &QTimer::timeout, this, &ViewsPanel::UpdatePlan);
+  connect(camera_, &CameraForm::Changed, this, &ViewsPanel::ScheduleUpdate);
+  connect(session_, &StudioSession::ModelChanged, this, &ViewsPanel::UpdatePlan);
+  connect(save, &QPushButton::clicked, this, [this] {
+    const QString path =
+        AskSavePath(this, "profile", tr("Save training profile"), JsonFileFilter(), "profile.json");
+    if (!path.isEmpty()) SaveProfile(path);
+  });
+  connect(load, &QPushButton::clicked, this, [this] {
+    const QString path =
+        AskOpenPath(this, "profile", tr("Load training profile"), JsonFileFilter());
+    if (!path.isEmpty()) LoadProfile(path);
+  });
+  UpdatePlan();
+}
+
+QWidget* ViewsPanel::BuildDepthBox() {
+  depth_min_ = NumberBox(1.0, 1e6, " mm");
+  depth_max_ = NumberBox(1.0, 1e6, " mm");
+  depth_min_->setObjectName("depthMinBox");
+  depth_max_->setObjectName("depthMaxBox");
+  auto* box = new QGroupBox(tr("Depth range (layers spaced by the sphere radius)"));
+  auto* form = new QFormLayout(box);
+  form->addRow(tr("D_min"), depth_min_);
+  form->addRow(tr("D_max"), depth_max_);
+  for (QDoubleSpinBox* spin : {depth_min_, depth_max_}) {
+    connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+            &ViewsPanel::ScheduleUpdate);
+  }
+  return box;
+}
+
+QWidget* ViewsPanel::BuildViewsBox() {
+  auto* box = new QGroupBox(tr("Views (degrees)"));
+  auto* grid = new QGridLayout(box);
+  const QString rows[] = {tr("Azimuth"), tr("Elevation"), tr("Roll")};
+  const QString columns[] = {tr("min"), tr("step"), tr("max")};
+  const char* names[] = {"azimuth", "elevation", "roll"};
+  for (int column = 0; column < 3; ++column)
+    grid->addWidget(new QLabel(columns[column]), 0, column + 1);
+  for (int row = 0; row < 3; ++row) {
+    grid->addWidget(new QLabel(rows[row]), row + 1, 0);
+    for (int column = 0; column < 3; ++column) {
+      auto* spin = NumberBox(column == 1 ? 0.1 : -360.0, 360.0, "°");
+      spin->setObjectName(QStringLiteral("%1%2Box").arg(names[row], columns[column]));
+      angles_[row][column] = spin;
+      grid->addWidget(spin, row + 1, column + 1);
+      connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+              &ViewsPanel::ScheduleUpdate);
+    }
+  }
+  even_spacing_ = NumberBox(0.0, 90.0, "°");
+  even_spacing_->setObjectName("evenSpacingBox");
+  even_spacing_->setSpecialValueText(tr("0 (az/el grid)"));
+  even_spacing_->setToolTip(
+      tr("When above 0: camera directions evenly spread on the view "
+         "sphere (Fibonacci), limited to the elevation range; the "
+         "azimuth range is then unused"));
+  grid->addWidget(new QLabel(tr("Even spacing")), 4, 0);
+  grid->addWidget(even_spacing_, 4, 1, 1, 3);
+  connect(even_spacing_, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+          &ViewsPanel::ScheduleUpdate);
+  return box;
+}
+
+QWidget* ViewsPanel::BuildFeaturesBox() {
+  color_features_ = CountBox("colorFeaturesBox");
+  normal_features_ = CountBox("normalFeaturesBox");
+  auto* box = new QGroupBox(tr("Features per template"));
+  auto* form = new QFormLayout(box);
+  form->addRow(tr("Colour gradients"), color_features_);
+  form->addRow(tr("Surface normals"), normal_features_);
+  for (QSpinBox* spin : {color_features_, normal_features_}) {
+    connect(spin, qOverload<int>(&QSpinBox::valueChanged), this, &ViewsPanel::ScheduleUpdate);
+  }
+  return box;
+}
+
+TrainingProfile ViewsPanel::profile() const {
+  TrainingProfile profile = base_;
+  profile.depth_min_mm = depth_min_->value();
+  profile.depth_max_mm = depth_max_->value();
+  for (int row = 0; row < 3; ++row) {
+    *RangeOf(profile.views, row) = {angles_[row][0]->value(), angles_[row][1]->value(),
+                                    angles_[row][2]->value()};
+  }
+  profile.views.even_spacing_deg = even_spacing_->value();
+  profile.features.color_features = color_features_->value();
+  profile.features.normal_features = normal_features_->value();
+  return profile;
+}
+
+void ViewsPanel::SetProfile(const TrainingProfile& profile) {
+  base_ = profile;
+  {
+    // One plan update for the whole profile, not one per field.
+    std::vector<std::unique_ptr<QSignalBlocker>> blockers;
+    for (QAbstractSpinBox* box : findChildren<QAbstractSpinBox*>()) {
+      blockers.push_back(std::make_unique<QSignalBlocker>(box));
+    }
+    depth_min_->setValue(profile.depth_min_mm);
+    depth_max_->setValue(profile.depth_max_mm);
+    ViewSamplingOptions views = profile.views;
+    for (int row = 0; row < 3; ++row) {
+      const AngleRange& range = *RangeOf(views, row);
+      angles_[row][0]->setValue(range.min_deg);
+      angles_[row][1]->setValue(range.step_deg);
+      angles_[row][2]->setValue(range.max_deg);
+    }
+    even_spacing_->setValue(profile.views.even_spacing_deg);
+    color_features_->setValue(profile.features.color_features);
+    normal_features_->setValue(profile.features.normal_features);
+  }
+  ScheduleUpdate();
+}
+
+PinholeCamera ViewsPanel::camera() const { return camera_->camera(); }
+
+void ViewsPanel::SetCamera(const PinholeCamera& camera) { camera_->SetCamera(camera); }
+
+TrainingRequest ViewsPanel::request() const {
+  TrainingRequest request;
+  request.camera = camera();
+  request.profile = profile();
+  if (const auto model = session_->model()) request.name = model->source.stem().string();
+  return request;
+}
+
+void ViewsPanel::ScheduleUpdate() { debounce_->start(); }
+
+void ViewsPanel::UpdatePlan() {
+  debounce_->stop();
+  plan_.reset();
+  const auto model = session_->model();
+  QString text;
+  if (model == nullptr) {
+    text = tr("Open a mesh to count depth layers and templates.");
+  } else {
+    try {
+      plan_ = PlanTraining(*model, request());
+    } catch (const std::exception& error) {
+      text = tr("<span style='color:#ff6b6b'>Invalid: %1</span>")
+                 .arg(QString::fromStdString(error.what()).toHtmlEscaped());
+    }
+  }
+  if (plan_.has_value()) {
+    const QLocale locale;
+    text = tr("<b>%1</b> layers × <b>%2</b> views = <b>%3</b> templates<br>layer step r = %4 mm")
+               .arg(plan_->layer_depths_mm.size())
+               .arg(locale.toString(static_cast<qulonglong>(plan_->views.size())))
+               .arg(locale.toString(static_cast<qulonglong>(plan_->TemplateCount())))
+               .arg(plan_->radius_mm, 0, 'f', 1);
+  }
+  plan_label_->setText(text);
+  emit PlanChanged();
+}
+
+QString ViewsPanel::plan_text() const { return plan_label_->text(); }
+
+bool ViewsPanel::SaveProfile(const QString& path) {
+  try {
+    SaveTrainingProfile(path.toStdString(), profile());
+    return true;
+  } catch (const std::exception& error) {
+    ShowError(this, tr("Save profile “%1”").arg(path), QString::fromStdString(error.what()));
+    return false;
+  }
+}
+
+bool ViewsPanel::LoadProfile(const QString& path) {
+  try {
+    SetProfile(LoadTrainingProfile(path.toStdString()));
+    return true;
+  } catch (const std::exception& error) {
+    ShowError(this, tr("Load profile “%1”").arg(path), QString::fromStdString(error.what()));
+    return false;
+  }
+}
+
+void ViewsPanel::SaveSettings() const {
+  QSettings settings;
+  settings.setValue("profile/json", QString::fromStdString(ToJson(profile()).dump()));
+  const PinholeCamera cam = camera();
+  settings.setValue("camera/intrinsics",
+                    QVariantList{cam.fx, cam.fy, cam.cx, cam.cy, cam.width, cam.height});
+}
+
+void ViewsPanel::RestoreSettings() {
+  QSettings settings;
+  const QString json = settings.value("profile/json").toString();
+  try {
+    if (!json.isEmpty()) {
+      SetProfile(TrainingProfileFromJson(nlohmann::json::parse(json.toStdString())));
+    }
+  } catch (const std::exception&) {
+    // A profile saved by another version: keep the defaults.
+  }
+  const QVariantList values = settings.value("camera/intrinsics").toList();
+  if (values.size() == 6) {
+    SetCamera({values[0].toDouble(), values[1].toDouble(), values[2].toDouble(),
+               values[3].toDouble(), values[4].toInt(), values[5].toInt()});
+  }
+}
+
+}  // namespace layermod::ui

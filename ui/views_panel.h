@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QWidget>
+#include <optional>
+
+#include "pipeline/training.h"
+
+class QDoubleSpinBox;
+class QLabel;
+class QSpinBox;
+class QTimer;
+
+namespace layermod::ui {
+
+class CameraForm;
+class StudioSession;
+
+// The training profile form: depth range, view sampling, feature counts and camera, with a live
+// count of layers and templates (PlanTraining) once a model is loaded.
+class ViewsPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ViewsPanel(StudioSession* session, QWidget* parent = nullptr);
+
+  TrainingProfile profile() const;
+  void SetProfile(const TrainingProfile& profile);
+  PinholeCamera camera() const;
+  void SetCamera(const PinholeCamera& camera);
+  // Object name from the model's file name, obj_id 1.
+  TrainingRequest request() const;
+
+  // The plan for the current model and form (nullopt without a model or with invalid values).
+  const std::optional<TrainingPlan>& plan() const { return plan_; }
+  QString plan_text() const;
+
+  // Profile files; failures show an error box naming the file.
+  bool SaveProfile(const QString& path);
+  bool LoadProfile(const QString& path);
+  // Last values between runs (QSettings).
+  void SaveSettings() const;
+  void RestoreSettings();
+
+ public slots:
+  void UpdatePlan();  // now, without waiting for the debounce
+
+ signals:
+  void PlanChanged();
+
+ private:
+  QWidget* BuildDepthBox();
+  QWidget* BuildViewsBox();
+  QWidget* BuildFeaturesBox();
+  void ScheduleUpdate();
+
+  StudioSession* session_;
+  TrainingProfile base_;  // fields the form does not show are kept from here
+  QDoubleSpinBox* depth_min_;
+  QDoubleSpinBox* depth_max_;
+  QDoubleSpinBox* angles_[3][3];  // [azimuth, elevation, roll][min, step, max]
+  QDoubleSpinBox* even_spacing_;
+  QSpinBox* color_features_;
+  QSpinBox* normal_features_;
+  CameraForm* camera_;
+  QLabel* plan_label_;
+  QTimer* debounce_;
+  std::optional<TrainingPlan> plan_;
+};
+
+}  // namespace layermod::ui
