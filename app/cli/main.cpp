@@ -23,6 +23,15 @@ void LogToStderr(layermod::LogLevel level, std::string_view message) {
                static_cast<int>(message.size()), message.data());
 }
 
+// CLI11 reports a mistyped command as "a subcommand is required"; name it instead.
+bool IsUnknownCommand(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return false;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (command->check_name(argv[1])) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -37,6 +46,10 @@ int main(int argc, char** argv) {
   layermod::cli::AddDetectCommand(app);
   layermod::cli::AddSynthCommand(app);
   layermod::cli::AddMakeSampleCommand(app);
+  if (IsUnknownCommand(app, argc, argv)) {
+    std::fprintf(stderr, "layermod: unknown command '%s' (see layermod --help)\n", argv[1]);
+    return kExitUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -78,12 +78,13 @@ void RunTrain(const TrainArgs& args) {
   const Model model = LoadModel(args.model, load_options);
   if (request.name.empty()) request.name = model.source.stem().string();
   const TrainingPlan plan = PlanTraining(model, request);
+  // Ctrl-C is caught from here on: it cancels the job and nothing is written.
+  CancelToken cancel;
+  InterruptScope interrupt(cancel);
   std::fprintf(stderr, "training %zu templates: %zu views x %zu depth layers (radius %.2f mm)\n",
                plan.TemplateCount(), plan.views.size(), plan.layer_depths_mm.size(),
                plan.radius_mm);
 
-  CancelToken cancel;
-  InterruptScope interrupt(cancel);
   ProgressBar bar;
   const JobControl job(
       [&bar](std::size_t done, std::size_t total, std::string_view stage) {

@@ -10,14 +10,6 @@
 
 namespace layermod::bop_internal {
 
-std::string Quoted(std::string_view text) {
-  // Appended piecewise: GCC 12 raises a false -Wrestrict on "'" + string + "'" at -O3.
-  std::string quoted(1, '\'');
-  quoted += text;
-  quoted += '\'';
-  return quoted;
-}
-
 void JsonContext::Fail(const std::string& problem) const {
   std::string message = Quoted(file) + ": ";
   if (!where.empty()) message += where + ": ";

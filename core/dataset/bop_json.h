@@ -11,15 +11,11 @@
 #include <vector>
 
 #include "geometry/pose.h"
+#include "util/quoted.h"
 
 namespace layermod::bop_internal {
 
-// 'text' in single quotes, for file names and JSON keys in messages.
-std::string Quoted(std::string_view text);
-inline std::string Quoted(const std::filesystem::path& path) {
-  const std::string text = path.string();
-  return Quoted(std::string_view(text));
-}
+using layermod::Quoted;
 
 // A JSON file and the place inside it, for error messages.
 struct JsonContext {

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "util/quoted.h"
 #include "mesh/model.h"
 
 #include <assimp/config.h>
@@ -32,14 +33,6 @@ constexpr double kMinTriangleAreaMm2 = 1e-12;
 constexpr double kMetreScaleDiameterMm = 5.0;        // a part loaded as mm but this small: metres?
 constexpr double kMillimetreScaleDiameterMm = 20e3;  // loaded as m but 20 m across: mm?
 constexpr char kOriginWarningMarker[] = "origin is far from";
-
-std::string Quoted(const fs::path& path) {
-  // Appended piecewise: GCC 12 raises a false -Wrestrict on "\"" + string + "\"" at -O3.
-  std::string quoted(1, '"');
-  quoted += path.string();
-  quoted += '"';
-  return quoted;
-}
 
 std::string FormatMm(double value_mm) {
   std::ostringstream out;

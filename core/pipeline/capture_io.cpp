@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "util/quoted.h"
 #include "pipeline/capture_io.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -10,14 +11,6 @@
 
 namespace layermod {
 namespace {
-
-// Built piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict) on "'" + s + "'".
-std::string Quoted(const std::filesystem::path& path) {
-  std::string quoted = "'";
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
 
 cv::Mat ReadImage(const std::filesystem::path& path, int flags) {
   if (!std::filesystem::is_regular_file(path)) throw IoError(Quoted(path) + ": no such file");

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "util/quoted.h"
 #include "synth/model_library.h"
 
 #include <tbb/parallel_for.h>
@@ -15,13 +16,6 @@
 namespace layermod {
 namespace fs = std::filesystem;
 namespace {
-
-std::string Quoted(const fs::path& path) {
-  std::string quoted(1, '\'');
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
 
 std::vector<Eigen::Vector3d> Positions(const RenderMesh& mesh) {
   std::vector<Eigen::Vector3d> points;

@@ -13,6 +13,7 @@
 #include <set>
 #include <string>
 
+#include "util/quoted.h"
 #include "dataset/bop_writer.h"
 #include "dataset/models_info.h"
 #include "synth/synthesizer.h"
@@ -22,13 +23,6 @@
 namespace layermod {
 namespace fs = std::filesystem;
 namespace {
-
-std::string Quoted(const fs::path& path) {
-  std::string quoted(1, '\'');
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
-}
 
 // The dataset is built here and renamed to its final name only when complete; removed on
 // failure or cancellation.

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "util/quoted.h"
 #include "synth/textures.h"
 
 #include <algorithm>
@@ -18,13 +19,6 @@ constexpr int kMipLevels = 7;  // 512 .. 8 texels
 
 double Uniform(std::mt19937_64& rng, double low, double high) {
   return std::uniform_real_distribution<double>(low, high)(rng);
-}
-
-std::string Quoted(const fs::path& path) {
-  std::string quoted(1, '\'');
-  quoted += path.string();
-  quoted += '\'';
-  return quoted;
 }
 
 bool IsImageFile(const fs::path& path) {

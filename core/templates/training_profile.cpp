@@ -139,7 +139,7 @@ void TrainingProfile::Validate() const {
   }
   if (depth_min_mm <= 0.0) throw Error("depth range: depth_min_mm must be positive");
   if (depth_min_mm >= depth_max_mm) {
-    throw Error("depth range: depth_min_mm must be below depth_max_mm");
+    throw Error("depth range: D_min must be below D_max (depth_min_mm must be below depth_max_mm)");
   }
   views.Validate();
   features.Validate();

@@ -23,6 +23,9 @@ struct CliCase {
   std::string args;
 };
 
+// Test names show the case's name, not a byte dump of the struct.
+void PrintTo(const CliCase& c, std::ostream* os) { *os << c.name; }
+
 std::string Trim(const std::string& text) {
   const auto begin = text.find_first_not_of(' ');
   if (begin == std::string::npos) return "";
@@ -108,11 +111,15 @@ TEST_P(CliGoldenTest, ExitCodeAndOutput) {
   EXPECT_NE(result.output.find(expected), std::string::npos)
       << "expected to find: " << expected << "\nactual output:\n" << result.output;
   // A failed command never leaves an output archive behind.
-  if (c.exit_code != 0) EXPECT_FALSE(fs::exists(temp_->path() / "a.layermod"));
+  if (c.exit_code != 0) {
+    EXPECT_FALSE(fs::exists(temp_->path() / "a.layermod"));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CliGoldenTest, ::testing::ValuesIn(LoadCases()),
-                         [](const auto& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<CliCase>& param_info) {
+                           return param_info.param.name;
+                         });
 
 }  // namespace
 }  // namespace layermod::test

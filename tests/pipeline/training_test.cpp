@@ -22,7 +22,7 @@ TrainingRequest TinyRequest() {
   request.profile.depth_max_mm = 900.0;
   request.profile.views.even_spacing_deg = 0.0;
   request.profile.views.azimuth = {0.0, 90.0, 270.0};
-  request.profile.views.elevation = {15.0, 30.0, 45.0};
+  request.profile.views.elevation = {15.0, 15.0, 45.0};
   request.profile.views.roll = {-20.0, 20.0, 20.0};
   return request;
 }
