@@ -7,7 +7,7 @@ set -euo pipefail
 BUILD_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libopencv-dev libopencv-contrib-dev libassimp-dev libopenmesh-dev
-  nlohmann-json3-dev libcli11-dev libtbb-dev libzip-dev zlib1g-dev
+  nlohmann-json3-dev libcli11-dev libtbb-dev libzip-dev libdeflate-dev zlib1g-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
 )
 GUI_PACKAGES=(
