@@ -32,8 +32,8 @@ struct DetectArgs {
   std::string float_depth_unit = "mm";
   std::string mode = "scene-patch";
   int max_instances = 1;
-  int blocks = 1;
-  float threshold = 80.0f;
+  int blocks = CoarsePositioningOptions{}.max_blocks;
+  float threshold = MatchOptions{}.threshold_percent;
   std::string json_out;
   std::string overlay_out;
   std::string stages_dir;

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+
+#include <opencv2/imgproc.hpp>
 
 #include "util/error.h"
 
@@ -57,6 +60,23 @@ cv::Mat DepthEdgeMask(const cv::Mat& depth_mm, float threshold_mm) {
     }
   }
   return edges;
+}
+
+cv::Mat FillDepthHolesFromFar(const cv::Mat& depth_mm, int max_gap_px) {
+  if (depth_mm.type() != CV_32F) throw Error("FillDepthHolesFromFar: expected a CV_32F depth map");
+  if (max_gap_px < 0) throw Error("FillDepthHolesFromFar: max_gap_px must be >= 0");
+  // Invalid (NaN, inf, <= 0) as 0, so a max filter picks the farthest valid neighbour.
+  cv::Mat filled = depth_mm.clone();
+  filled.setTo(0.0f, ~((filled > 0.0f) & (filled < std::numeric_limits<float>::infinity())));
+  const cv::Mat kernel = cv::Mat::ones(5, 5, CV_8U);  // each pass reaches 2 px farther
+  for (int reach = 0; reach < max_gap_px; reach += 2) {
+    const cv::Mat holes = filled <= 0.0f;
+    if (cv::countNonZero(holes) == 0) break;
+    cv::Mat farthest;
+    cv::dilate(filled, farthest, kernel);
+    farthest.copyTo(filled, holes);
+  }
+  return filled;
 }
 
 int CountDepthEdges(const cv::Mat& depth_mm, float threshold_mm) {

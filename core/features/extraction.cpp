@@ -181,33 +181,4 @@ ExtractedTemplate ExtractTemplate(const RenderedView& view, const PinholeCamera&
   if (result.bbox_px.area() > 0) MakeRelative(result.bbox_px, &result.levels);
   return result;
 }
-
-int TemplateDepthEdgeCount(const RenderedView& view, const PinholeCamera& camera,
-                           const cv::Point2d& centre_px, double diameter_mm, double layer_depth_mm,
-                           float edge_threshold_mm) {
-  if (!(diameter_mm > 0.0) || !(layer_depth_mm > 0.0) || !std::isfinite(diameter_mm) ||
-      !std::isfinite(layer_depth_mm) || !std::isfinite(centre_px.x) ||
-      !std::isfinite(centre_px.y)) {
-    throw Error("TemplateDepthEdgeCount: diameter, layer depth and centre must be finite, > 0");
-  }
-  const double side = std::round(camera.fx * diameter_mm / layer_depth_mm);
-  if (!(side >= 1.0 && side <= 16384.0)) {
-    throw Error("TemplateDepthEdgeCount: window side " + std::to_string(side) +
-                " px is out of range 1..16384");
-  }
-  if (view.roi.area() > 0) CheckView(view);
-  const int side_px = static_cast<int>(side);
-  const cv::Point corner(static_cast<int>(std::lround(centre_px.x - (side_px - 1) / 2.0)),
-                         static_cast<int>(std::lround(centre_px.y - (side_px - 1) / 2.0)));
-  const auto far_mm = static_cast<float>(layer_depth_mm + 2.0 * diameter_mm);
-  cv::Mat window(side_px, side_px, CV_32F, cv::Scalar(far_mm));
-  const cv::Rect overlap = cv::Rect(corner, cv::Size(side_px, side_px)) & view.roi;
-  if (overlap.area() > 0) {
-    const cv::Mat source = view.depth_mm(overlap - view.roi.tl());
-    const cv::Mat object = (view.mask(overlap - view.roi.tl()) > 0) & (source > 0.0f);
-    source.copyTo(window(overlap - corner), object);
-  }
-  return CountDepthEdges(window, edge_threshold_mm);
-}
-
 }  // namespace layermod

@@ -28,11 +28,4 @@ struct ExtractedTemplate {
 ExtractedTemplate ExtractTemplate(const RenderedView& view, const PinholeCamera& camera,
                                   const FeatureOptions& options);
 
-// Number of depth-edge pixels in the L x L window (L = f * diameter / layer depth) centred on
-// `centre_px` (camera pixels) of a rendered view, background taken as far. Coarse positioning
-// compares scene patches with this count (SPEC §3.2, paper Eq. 5).
-int TemplateDepthEdgeCount(const RenderedView& view, const PinholeCamera& camera,
-                           const cv::Point2d& centre_px, double diameter_mm, double layer_depth_mm,
-                           float edge_threshold_mm);
-
 }  // namespace layermod

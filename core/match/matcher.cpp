@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -64,16 +65,21 @@ std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
 }
 
 // Grid cell (gx, gy) of level `top` stands for the level-0 top-left positions
-// [gx * T * 2^top, (gx + 1) * T * 2^top) (spread.h), i.e. for template centres shifted by half the
-// level-0 box. CellNearCandidate: whether those centres come within the radius of a point.
+// [gx * T * 2^top, (gx + 1) * T * 2^top) (spread.h), i.e. for template anchors shifted by the
+// anchor offset. CellNearCandidate: whether those anchors come within the radius of a point.
 struct CandidateGeometry {
   int cell_span_px = 0;  // level-0 pixels per top-level cell
-  cv::Point half_box;    // level-0 box top-left -> centre
+  cv::Point anchor;      // level-0 box top-left -> the template's anchor (see matcher.h)
+  cv::Point half_box;    // level-0 box top-left -> box centre (for duplicate suppression)
 };
 
 CandidateGeometry Geometry(const TemplateRecord& record, int top, const SceneLevel& level) {
-  return {level.spread_px << top,
-          cv::Point(record.levels[0].width / 2, record.levels[0].height / 2)};
+  const cv::Point half_box(record.levels[0].width / 2, record.levels[0].height / 2);
+  const bool has_anchor = record.centre_offset_px != cv::Point2f(0.0f, 0.0f);
+  const cv::Point anchor = has_anchor ? cv::Point(static_cast<int>(std::lround(record.centre_offset_px.x)),
+                                                  static_cast<int>(std::lround(record.centre_offset_px.y)))
+                                      : half_box;
+  return {level.spread_px << top, anchor, half_box};
 }
 
 bool CellNearCandidate(const cv::Point& cell, const CandidateGeometry& geometry,
@@ -81,7 +87,7 @@ bool CellNearCandidate(const cv::Point& cell, const CandidateGeometry& geometry,
   const double radius_sq = static_cast<double>(area.radius_px) * area.radius_px;
   const int span = geometry.cell_span_px;
   return std::any_of(area.points->begin(), area.points->end(), [&](const cv::Point& point) {
-    const cv::Point top_left = point - geometry.half_box;  // puts the centre on the point
+    const cv::Point top_left = point - geometry.anchor;  // puts the anchor on the point
     const int dx =
         std::max({cell.x * span - top_left.x, top_left.x - (cell.x * span + span - 1), 0});
     const int dy =
@@ -90,20 +96,34 @@ bool CellNearCandidate(const cv::Point& cell, const CandidateGeometry& geometry,
   });
 }
 
-// Per candidate point, the rows of cells of its bounding square: a superset of the cells near it,
-// scored without a pass over the whole grid (the few hits are then checked exactly).
+// The cells within the bounding square of some candidate point (a superset of the cells near
+// one), as merged row spans: scored without a pass over the whole grid and without scoring a
+// cell twice where the squares of neighbouring points overlap (the few hits are then checked
+// exactly).
 std::vector<GridRowSpan> CandidateSpans(const CandidateGeometry& geometry, const cv::Size& cells,
                                         const CandidateArea& area) {
-  std::vector<GridRowSpan> spans;
+  std::vector<std::uint8_t> covered(static_cast<std::size_t>(cells.area()), 0);
   const int span = geometry.cell_span_px;
   for (const cv::Point& point : *area.points) {
-    const cv::Point top_left = point - geometry.half_box;
+    const cv::Point top_left = point - geometry.anchor;
     const int gx0 = std::max(FloorDiv(top_left.x - area.radius_px, span), 0);
     const int gx1 = std::min(FloorDiv(top_left.x + area.radius_px, span), cells.width - 1);
     const int gy0 = std::max(FloorDiv(top_left.y - area.radius_px, span), 0);
     const int gy1 = std::min(FloorDiv(top_left.y + area.radius_px, span), cells.height - 1);
-    if (gx0 > gx1) continue;
-    for (int gy = gy0; gy <= gy1; ++gy) spans.push_back({gy, gx0, gx1});
+    for (int gy = gy0; gy <= gy1; ++gy) {
+      std::uint8_t* row = covered.data() + static_cast<std::size_t>(gy) * cells.width;
+      std::fill(row + gx0, row + std::max(gx0, gx1 + 1), std::uint8_t{1});
+    }
+  }
+  std::vector<GridRowSpan> spans;
+  for (int gy = 0; gy < cells.height; ++gy) {
+    const std::uint8_t* row = covered.data() + static_cast<std::size_t>(gy) * cells.width;
+    for (int gx = 0; gx < cells.width; ++gx) {
+      if (row[gx] == 0) continue;
+      const int first = gx;
+      while (gx + 1 < cells.width && row[gx + 1] != 0) ++gx;
+      spans.push_back({gy, first, gx});
+    }
   }
   return spans;
 }

@@ -18,7 +18,9 @@
 namespace layermod {
 
 struct MatchOptions {
-  float threshold_percent = 80.0f;  // similarity a match needs, at the top level and at level 0
+  // Similarity a match needs, at the top level and at level 0. 70 rather than OpenCV's usual 80:
+  // partly occluded parts score 70-80, and pose verification rejects the extra false matches.
+  float threshold_percent = 70.0f;
   // Matches of one object (TemplateRecord::obj_id) whose box centres lie at most this far apart
   // (level-0 px) are duplicates: only the best is kept. Different objects never suppress each
   // other. 0 removes exact duplicates only.
@@ -79,8 +81,10 @@ class PreparedScene {
 // then non-maximum suppression (MatchOptions::nms_radius_px). Templates run in parallel (oneTBB).
 //
 // candidate_points (level-0 pixels): when given, only top-level grid positions that put the
-// template CENTRE (box top-left + (width / 2, height / 2) at level 0) within candidate_radius_px
-// of a point are scored; an empty list matches nothing.
+// template's ANCHOR within candidate_radius_px of a point are scored; an empty list matches
+// nothing. The anchor is box top-left + TemplateRecord::centre_offset_px (the projection of the
+// object's sphere centre, where coarse positioning aims), or the box centre when that offset is
+// zero.
 //
 // Deterministic: sorted by similarity (descending), then template id, then y, then x.
 // Throws Error for invalid options or a template with invalid features (naming its id).

@@ -76,7 +76,7 @@ void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera
 std::vector<RawMatch> MatchKeptBlocks(const PreparedScene& scene, const TemplateArchive& archive,
                                       const ArchiveObject& object,
                                       const ObjectDiagnostics& diagnostics,
-                                      const PinholeCamera& camera, const DetectorOptions& options) {
+                                      const DetectorOptions& options) {
   std::map<int, std::vector<cv::Point>> points_by_layer;
   for (int index : diagnostics.coarse.kept) {
     const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
@@ -88,11 +88,9 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedScene& scene, const Template
   }
   std::vector<RawMatch> matches;
   for (const auto& [layer, points] : points_by_layer) {
-    // Detection points aim at the object's centre; the matcher places template box centres,
-    // which sit up to about a quarter of the object's image size away from it.
-    const double object_size_px =
-        camera.fx * object.diameter_mm / object.layer_depths_mm[static_cast<std::size_t>(layer)];
-    const int radius_px = options.coarse.point_step_px + static_cast<int>(0.25 * object_size_px);
+    // Detection points aim at the object's centre, where each template's anchor lies (the
+    // projection of its sphere centre): the true centre is within half a step of a point.
+    const int radius_px = options.coarse.point_step_px;
     std::vector<RawMatch> layer_matches = MatchTemplates(
         scene, archive.TemplatesOf(object.obj_id, layer), options.match, &points, radius_px);
     matches.insert(matches.end(), layer_matches.begin(), layer_matches.end());
@@ -194,15 +192,15 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       stage_start = Clock::now();
       const float edge_threshold_mm =
           features.depth_edge_fraction * static_cast<float>(object.bbox_size.maxCoeff());
-      const cv::Mat edges = DepthEdgeMask(used.depth_mm, edge_threshold_mm);
+      const cv::Mat edges = DepthEdgeMask(
+          FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px), edge_threshold_mm);
       diagnostics.coarse = PositionCoarsely(diagnostics.division, used.depth_mm, edges,
                                             used.camera.fx, object.diameter_mm,
                                             entry.edge_ranges, options.coarse);
       result.timings.coarse_ms += MsSince(stage_start);
 
       stage_start = Clock::now();
-      diagnostics.matches = MatchKeptBlocks(scene, archive, object, diagnostics, used.camera,
-                                            options);
+      diagnostics.matches = MatchKeptBlocks(scene, archive, object, diagnostics, options);
       result.timings.match_ms += MsSince(stage_start);
     } else {
       stage_start = Clock::now();

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "features/extraction.h"
+#include "features/template_edges.h"
 #include "render/rasterizer.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -65,9 +66,12 @@ TemplateRecord TrainOneTemplate(const TemplateContext& context, std::uint16_t la
   record.centre_offset_px = cv::Point2f(static_cast<float>(centre_px.x - extracted.bbox_px.x),
                                         static_cast<float>(centre_px.y - extracted.bbox_px.y));
   record.centre_minus_surface_mm = static_cast<float>(layer_depth_mm) - MedianDepthMm(rendered);
-  record.depth_edge_count =
-      TemplateDepthEdgeCount(rendered, camera, centre_px, context.model.DiameterMm(),
-                             layer_depth_mm, context.edge_threshold_mm);
+  // Seen from above, the part stands on its support plane (model z = bbox min, +Z up), as in a
+  // scene; from below the horizon there is no plane to see.
+  const SupportPlane support{record.cam_from_model, context.model.bbox_min.z()};
+  record.depth_edge_count = TemplateDepthEdgeCount(
+      rendered, camera, centre_px, context.model.DiameterMm(), layer_depth_mm,
+      context.edge_threshold_mm, view.elevation_deg > 0.0 ? &support : nullptr);
   const bool weak = rendered.empty() || extracted.FeatureCount(0) < features.min_features;
   record.status = weak ? TemplateStatus::kTooFewFeatures : TemplateStatus::kOk;
   return record;

@@ -67,6 +67,7 @@ void CoarsePositioningOptions::Validate() const {
     throw Error("coarse positioning: need 0 <= lower factor <= upper factor");
   }
   if (max_blocks < 0) throw Error("coarse positioning: max_blocks must be >= 0 (0 = all)");
+  if (hole_fill_px < 0) throw Error("coarse positioning: hole_fill_px must be >= 0");
 }
 
 std::vector<DetectionPoint> CoarsePositioning::KeptPoints() const {

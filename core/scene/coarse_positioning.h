@@ -13,7 +13,11 @@ struct CoarsePositioningOptions {
   int point_step_px = 8;       // s: spacing of detection points inside a block
   float lower_factor = 0.8f;   // keep when lower_factor * N_min <= num_i ...
   float upper_factor = 1.5f;   // ... <= upper_factor * N_max
-  int max_blocks = 1;          // keep the blocks with most surviving points (paper: 1)
+  // Keep the blocks with most surviving points. The paper keeps 1; in clutter the part's block
+  // is often second or third (other objects of similar size pass the edge test too).
+  int max_blocks = 3;
+  int hole_fill_px = 8;        // sensor holes up to this wide are filled from the far side
+                               // before edges are counted (see FillDepthHolesFromFar)
 
   void Validate() const;  // throws Error
 };

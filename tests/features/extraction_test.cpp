@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "features/extraction.h"
+#include "features/template_edges.h"
 
 #include <gtest/gtest.h>
 
@@ -219,6 +220,63 @@ TEST(TemplateDepthEdgeCountTest, WindowOutsideTheRoiIsBackground) {
   EXPECT_GT(tight_count, 0);
   // Far from the object: nothing.
   EXPECT_EQ(TemplateDepthEdgeCount(tight, camera, {50.0, 50.0}, diameter_mm, 700.0, 30.0f), 0);
+}
+
+// A camera looking straight down at the model's XY plane from `height_mm` above it.
+SupportPlane PlaneFacingCamera(double height_mm) {
+  SupportPlane plane;
+  plane.cam_from_model.R = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal();  // model +Z to camera
+  plane.cam_from_model.t = Eigen::Vector3d(0.0, 0.0, height_mm);
+  return plane;
+}
+
+TEST(SupportPlaneDepthTest, FrontoParallelPlaneHasConstantDepth) {
+  const PinholeCamera camera = test::KinectCamera();
+  const cv::Mat depth = SupportPlaneDepth(camera, PlaneFacingCamera(900.0), {10, 20, 30, 40}, 5000.0f);
+  ASSERT_EQ(depth.size(), cv::Size(30, 40));
+  double low = 0.0;
+  double high = 0.0;
+  cv::minMaxLoc(depth, &low, &high);
+  EXPECT_NEAR(low, 900.0, 1e-3);
+  EXPECT_NEAR(high, 900.0, 1e-3);
+}
+
+TEST(SupportPlaneDepthTest, TiltedPlaneFollowsTheRayIntersection) {
+  const PinholeCamera camera = test::KinectCamera();
+  // Tilt the plane 75 degrees about the camera x axis; a plane point stays at (0, 0, 1000).
+  SupportPlane plane = PlaneFacingCamera(1000.0);
+  plane.cam_from_model.R =
+      Eigen::AngleAxisd(DegToRad(75.0), Eigen::Vector3d::UnitX()).toRotationMatrix() *
+      plane.cam_from_model.R;
+  const cv::Rect window(0, 0, camera.width, camera.height);
+  const cv::Mat depth = SupportPlaneDepth(camera, plane, window, 1e6f);
+  const Eigen::Vector3d normal = plane.cam_from_model.R.col(2);
+  for (const cv::Point pixel : {cv::Point(320, 100), cv::Point(50, 300), cv::Point(600, 240)}) {
+    const double z = depth.at<float>(pixel);
+    const Eigen::Vector3d point = camera.Backproject(Eigen::Vector2d(pixel.x, pixel.y), z);
+    EXPECT_NEAR(normal.dot(point - Eigen::Vector3d(0.0, 0.0, 1000.0)), 0.0, 0.05 * z / 1000.0)
+        << pixel;
+  }
+  // The bottom rows look above the tilted plane's horizon: they see the far value.
+  const cv::Mat edge_on = SupportPlaneDepth(camera, plane, {0, camera.height - 1, 640, 1}, 3000.0f);
+  double low = 0.0;
+  cv::minMaxLoc(edge_on, &low);
+  EXPECT_EQ(low, 3000.0);
+}
+
+TEST(TemplateDepthEdgeCountTest, SupportPlaneJustBehindHidesTheSilhouette) {
+  const PinholeCamera camera = test::KinectCamera();
+  const cv::Point2d centre(camera.cx, camera.cy);
+  const RenderedView disc = test::DiscView({270, 190, 101, 101}, centre, 30.0, 700.0f);
+  const double diameter_mm = 100.0 * 700.0 / camera.fx;
+  const SupportPlane close_behind = PlaneFacingCamera(720.0);  // a 20 mm step
+  const SupportPlane far_behind = PlaneFacingCamera(900.0);    // a 200 mm step
+  const int against_far = TemplateDepthEdgeCount(disc, camera, centre, diameter_mm, 700.0, 30.0f);
+  EXPECT_GT(against_far, 0);
+  EXPECT_EQ(TemplateDepthEdgeCount(disc, camera, centre, diameter_mm, 700.0, 30.0f, &close_behind),
+            0);
+  EXPECT_EQ(TemplateDepthEdgeCount(disc, camera, centre, diameter_mm, 700.0, 30.0f, &far_behind),
+            against_far);
 }
 
 TEST(TemplateDepthEdgeCountTest, RejectsNonsense) {

@@ -50,6 +50,28 @@ TEST(MatcherTest, FindsATemplateAtItsExactPositionInteriorAndAtBorders) {
   }
 }
 
+TEST(MatcherTest, CandidatePointsRestrictTheSearchAroundTheTemplateAnchor) {
+  cv::RNG rng(64);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  const cv::Rect box(101, 67, 61, 47);
+  TemplateRecord record = test::TemplateFromScene(scene, box, 63, 4, rng);
+  record.centre_offset_px = cv::Point2f(12.0f, 35.0f);  // an anchor off the box centre
+  const std::vector<cv::Point> at_anchor = {box.tl() + cv::Point(12, 35)};
+  const auto found = Match(prepared, {record}, {}, &at_anchor, 3);
+  ASSERT_FALSE(found.empty());
+  EXPECT_EQ(cv::Point(found[0].x, found[0].y), box.tl());
+  // The box centre is about 21 px from the anchor: outside a 3 px radius, inside a 30 px one.
+  const std::vector<cv::Point> at_centre = {Centre(box)};
+  EXPECT_TRUE(Match(prepared, {record}, {}, &at_centre, 3).empty());
+  EXPECT_FALSE(Match(prepared, {record}, {}, &at_centre, 30).empty());
+  // Without an anchor offset the box centre is the anchor.
+  record.centre_offset_px = cv::Point2f(0.0f, 0.0f);
+  EXPECT_FALSE(Match(prepared, {record}, {}, &at_centre, 3).empty());
+  const std::vector<cv::Point> none;
+  EXPECT_TRUE(Match(prepared, {record}, {}, &none, 100).empty());
+}
+
 TEST(MatcherTest, EightBitTemplatesAndSingleLevelTemplatesAreFoundToo) {
   cv::RNG rng(62);
   test::TestScene scene = test::RandomScene({300, 200}, kDensity, rng);
