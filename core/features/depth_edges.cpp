@@ -68,14 +68,13 @@ cv::Mat FillDepthHolesFromFar(const cv::Mat& depth_mm, int max_gap_px) {
   // Invalid (NaN, inf, <= 0) as 0, so a max filter picks the farthest valid neighbour.
   cv::Mat filled = depth_mm.clone();
   filled.setTo(0.0f, ~((filled > 0.0f) & (filled < std::numeric_limits<float>::infinity())));
-  const cv::Mat kernel = cv::Mat::ones(5, 5, CV_8U);  // each pass reaches 2 px farther
-  for (int reach = 0; reach < max_gap_px; reach += 2) {
-    const cv::Mat holes = filled <= 0.0f;
-    if (cv::countNonZero(holes) == 0) break;
-    cv::Mat farthest;
-    cv::dilate(filled, farthest, kernel);
-    farthest.copyTo(filled, holes);
-  }
+  if (max_gap_px == 0) return filled;
+  // One max filter as wide as the largest gap: every pixel of such a hole sees its far side.
+  const cv::Mat holes = filled <= 0.0f;
+  cv::Mat farthest;
+  cv::dilate(filled, farthest,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * max_gap_px + 1, 2 * max_gap_px + 1)));
+  farthest.copyTo(filled, holes);
   return filled;
 }
 

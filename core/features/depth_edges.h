@@ -16,9 +16,9 @@ namespace layermod {
 cv::Mat DepthEdgeMask(const cv::Mat& depth_mm, float threshold_mm);
 
 // Depth sensors leave holes along depth discontinuities (shadows, flying pixels removed), right
-// where the edges are. Fills each invalid pixel within `max_gap_px` of valid depth with the
-// farthest valid depth around it (a hole at a discontinuity belongs to the background side), so
-// the step survives for DepthEdgeMask; larger holes stay invalid. CV_32F mm in and out.
+// where the edges are. Fills each invalid pixel with the farthest valid depth within
+// `max_gap_px` (a hole at a discontinuity belongs to the background side), so the step survives
+// for DepthEdgeMask; the inside of larger holes stays invalid. CV_32F mm in and out.
 cv::Mat FillDepthHolesFromFar(const cv::Mat& depth_mm, int max_gap_px);
 
 // Number of depth-edge pixels (see DepthEdgeMask).

@@ -74,5 +74,34 @@ TEST(DepthEdgeMaskTest, AnySizeAndBadInput) {
   EXPECT_THROW(DepthEdgeMask(cv::Mat(3, 3, CV_32F), std::nanf("")), Error);
 }
 
+// A sensor hole 4 px wide along the step, as real sensors leave at discontinuities.
+cv::Mat StepWithHole() {
+  cv::Mat depth = StepDepth(800.0f, 900.0f);
+  depth.colRange(18, 22).setTo(0.0f);
+  depth.at<float>(5, 10) = std::numeric_limits<float>::quiet_NaN();
+  return depth;
+}
+
+TEST(FillDepthHolesFromFarTest, HoleAtAStepTakesTheFarSide) {
+  const cv::Mat filled = FillDepthHolesFromFar(StepWithHole(), 8);
+  for (int col = 18; col < 22; ++col) EXPECT_EQ(filled.at<float>(10, col), 900.0f) << col;
+  EXPECT_EQ(filled.at<float>(5, 10), 800.0f);  // a NaN inside the near side: its neighbours
+  EXPECT_EQ(filled.at<float>(10, 5), 800.0f);  // valid depth is untouched
+  // The step is an edge again once the hole is filled; without filling the hole hides it.
+  EXPECT_EQ(cv::countNonZero(DepthEdgeMask(StepWithHole(), 30.0f)), 0);
+  EXPECT_GT(cv::countNonZero(DepthEdgeMask(filled, 30.0f)), 0);
+}
+
+TEST(FillDepthHolesFromFarTest, HolesWiderThanTheGapStayInvalid) {
+  cv::Mat depth(30, 40, CV_32F, cv::Scalar(700.0f));
+  depth.colRange(5, 35).setTo(0.0f);  // 30 px wide
+  const cv::Mat filled = FillDepthHolesFromFar(depth, 4);
+  EXPECT_EQ(filled.at<float>(10, 20), 0.0f);
+  EXPECT_EQ(filled.at<float>(10, 5), 700.0f);
+  EXPECT_EQ(cv::countNonZero(FillDepthHolesFromFar(cv::Mat::zeros(8, 8, CV_32F), 8)), 0);
+  EXPECT_THROW(FillDepthHolesFromFar(cv::Mat::zeros(8, 8, CV_16U), 8), Error);
+  EXPECT_THROW(FillDepthHolesFromFar(depth, -1), Error);
+}
+
 }  // namespace
 }  // namespace layermod
