@@ -6,7 +6,9 @@
 #include <exception>
 #include <string>
 
+#include "cli/bench_command.h"
 #include "cli/commands.h"
+#include "cli/eval_command.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "util/version.h"
@@ -46,6 +48,8 @@ int main(int argc, char** argv) {
   layermod::cli::AddDetectCommand(app);
   layermod::cli::AddSynthCommand(app);
   layermod::cli::AddMakeSampleCommand(app);
+  layermod::cli::AddEvalCommand(app);
+  layermod::cli::AddBenchCommand(app);
   if (IsUnknownCommand(app, argc, argv)) {
     std::fprintf(stderr, "layermod: unknown command '%s' (see layermod --help)\n", argv[1]);
     return kExitUsage;

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+#include "cli/bench_command.h"
+
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/interrupt.h"
+#include "cli/progress_bar.h"
+#include "eval/bench.h"
+#include "eval/bop_targets.h"
+#include "pipeline/detector.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace layermod::cli {
+namespace {
+
+struct BenchArgs {
+  std::vector<std::string> archives;
+  std::string dataset;
+  int scene_id = -1;
+  std::string targets;
+  double min_visib = 0.5;
+  double km = 0.1;
+  int frames = 0;
+  float threshold = 80.0f;
+  std::string out;
+};
+
+// Timings of an unoptimised build would mislead whoever reads the JSON.
+void RequireReleaseBuild() {
+#ifndef NDEBUG
+  throw Error("bench measures speed: build layermod with CMAKE_BUILD_TYPE=Release");
+#endif
+}
+
+FrameSelectionOptions BuildSelection(const BenchArgs& args) {
+  FrameSelectionOptions selection;
+  if (args.scene_id >= 0) selection.scene_id = args.scene_id;
+  if (!args.targets.empty()) selection.targets = LoadBopTargets(args.targets);
+  selection.min_visib_fract = args.min_visib;
+  selection.max_frames = args.frames;
+  selection.Validate();
+  return selection;
+}
+
+EvalRunInfo BuildRunInfo(const BenchArgs& args, const FrameSelectionOptions& selection,
+                         const EvalMetricOptions& metrics) {
+  EvalRunInfo info;
+  info.dataset_dir = args.dataset;
+  info.archives = args.archives;
+  info.targets_file = args.targets;
+  info.scene_id = selection.scene_id;
+  info.min_visib_fract = selection.min_visib_fract;
+  info.max_frames = selection.max_frames;
+  info.metrics = metrics;
+  return info;
+}
+
+BenchResult BenchWithProgress(const Detector& detector, const DetectorOptions& options,
+                              const BenchArgs& args, const FrameSelectionOptions& selection,
+                              const EvalMetricOptions& metrics) {
+  CancelToken cancel;
+  InterruptScope interrupt(cancel);
+  ProgressBar bar;
+  const JobControl job([&bar](std::size_t done, std::size_t total,
+                              std::string_view stage) { bar.Update(done, total, stage); },
+                       &cancel);
+  try {
+    BenchResult result = RunBench(detector, options, args.dataset, selection, metrics, job);
+    bar.Finish();
+    return result;
+  } catch (...) {
+    bar.Finish();
+    throw;
+  }
+}
+
+void RunBenchCommand(const BenchArgs& args) {
+  RequireReleaseBuild();
+  DetectorOptions options;
+  options.match.threshold_percent = args.threshold;
+  options.Validate();
+  EvalMetricOptions metrics;
+  metrics.km = args.km;
+  metrics.Validate();
+  const FrameSelectionOptions selection = BuildSelection(args);
+  CheckWritableTarget(args.out);
+  std::vector<TemplateArchive> archives;
+  for (const std::string& path : args.archives) archives.push_back(ReadArchive(path));
+  const Detector detector(std::move(archives));
+  const BenchResult result = BenchWithProgress(detector, options, args, selection, metrics);
+  WriteFileAtomically(
+      args.out, BenchReportJson(BuildRunInfo(args, selection, metrics), result).dump(2) + "\n");
+  std::printf("%s", BenchTable(result).c_str());
+  std::printf("templates     %zu (cv::linemod took %d, refused %d, in %.1f s)\n", result.templates,
+              result.linemod_training.templates, result.linemod_training.refused,
+              result.linemod_training.seconds);
+  std::printf("report        %s\n", args.out.c_str());
+}
+
+}  // namespace
+
+void AddBenchCommand(CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* command = app.add_subcommand(
+      "bench", "Time Scene-Patch, exhaustive matching and cv::linemod on the same frames");
+  command->add_option("--archive", args->archives, "Template archive(s) (*.layermod)")->required();
+  command->add_option("--dataset", args->dataset, "BOP dataset root or split folder (with depth)")
+      ->required();
+  command->add_option("--scene", args->scene_id, "Only this scene id");
+  command->add_option("--targets", args->targets, "BOP targets file: only the listed objects");
+  command->add_option("--min-visib", args->min_visib, "Skip instances less visible than this")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  command->add_option("--km", args->km, "Recall counts ADD(-S) <= km x diameter")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--frames", args->frames, "At most this many frames (0 = all)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
+      ->check(CLI::Range(1.0f, 100.0f))
+      ->capture_default_str();
+  command->add_option("--out", args->out, "bench.json to write")->required();
+  command->callback([args] { RunBenchCommand(*args); });
+}
+
+}  // namespace layermod::cli

@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: MIT
+#include "eval/eval_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <nlohmann/json.hpp>
+
+#include "util/atomic_file.h"
+#include "util/error.h"
+#include "util/quoted.h"
+#include "util/version.h"
+
+namespace layermod {
+namespace {
+
+// JSON has no infinity: an unusable 2D error is written as null.
+nlohmann::json FiniteOrNull(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+std::string Fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+nlohmann::json ObjectJson(const ObjectSummary& object) {
+  return {{"obj_id", object.obj_id},
+          {"metric", object.symmetric_metric ? "ADD-S" : "ADD"},
+          {"diameter_mm", object.diameter_mm},
+          {"frames", object.frames},
+          {"detected", object.detected},
+          {"correct", object.correct},
+          {"proj2d_correct", object.proj2d_correct},
+          {"box_correct", object.box_correct},
+          {"accuracy_percent", object.AccuracyPercent()},
+          {"proj2d_percent", object.Proj2DPercent()},
+          {"detection_rate_percent", object.DetectionRatePercent()},
+          {"mean_time_ms", object.mean_time_ms},
+          {"median_time_ms", object.median_time_ms}};
+}
+
+std::string TableRow(const std::string& label, const std::string& metric,
+                     const ObjectSummary& row) {
+  return "| " + label + " | " + metric + " | " + std::to_string(row.frames) + " | " +
+         Fixed(row.AccuracyPercent(), 1) + " | " + Fixed(row.Proj2DPercent(), 1) + " | " +
+         Fixed(row.DetectionRatePercent(), 1) + " | " + Fixed(row.mean_time_ms, 1) + " | " +
+         Fixed(row.median_time_ms, 1) + " |\n";
+}
+
+}  // namespace
+
+std::string UtcTimestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+nlohmann::json RunInfoJson(const EvalRunInfo& info) {
+  return {{"dataset", info.dataset_dir},
+          {"archives", info.archives},
+          {"mode", info.mode},
+          {"targets_file", info.targets_file},
+          {"scene_id", info.scene_id ? nlohmann::json(*info.scene_id) : nlohmann::json(nullptr)},
+          {"min_visib_fract", info.min_visib_fract},
+          {"max_frames", info.max_frames},
+          {"km", info.metrics.km},
+          {"proj2d_threshold_px", info.metrics.proj2d_threshold_px},
+          {"min_box_iou", info.metrics.min_box_iou}};
+}
+
+nlohmann::json SummaryJson(const MethodSummary& summary) {
+  nlohmann::json objects = nlohmann::json::array();
+  for (const ObjectSummary& object : summary.objects) objects.push_back(ObjectJson(object));
+  nlohmann::json overall = ObjectJson(summary.overall);
+  overall.erase("obj_id");
+  overall.erase("metric");
+  overall.erase("diameter_mm");
+  return {{"method", summary.name},
+          {"frames", summary.frames},
+          {"objects", objects},
+          {"overall", overall},
+          {"mean_object_accuracy_percent", summary.mean_object_accuracy_percent},
+          {"frame_time_ms",
+           {{"mean", summary.mean_frame_ms},
+            {"median", summary.median_frame_ms},
+            {"p90", summary.p90_frame_ms}}}};
+}
+
+nlohmann::json OutcomesJson(const MethodRun& run) {
+  nlohmann::json outcomes = nlohmann::json::array();
+  for (const TargetOutcome& outcome : run.outcomes) {
+    nlohmann::json entry = {{"scene_id", outcome.scene_id},
+                            {"im_id", outcome.image_id},
+                            {"obj_id", outcome.obj_id},
+                            {"detected", outcome.detected},
+                            {"time_ms", outcome.frame_time_ms}};
+    if (outcome.detected) {
+      entry["score"] = outcome.score;
+      entry["error_mm"] = FiniteOrNull(outcome.pose.error_mm);
+      entry["proj2d_px"] = FiniteOrNull(outcome.pose.proj2d_px);
+      entry["box_iou"] = outcome.pose.box_iou;
+      entry["correct"] = outcome.pose.correct;
+      entry["proj2d_correct"] = outcome.pose.proj2d_correct;
+      entry["box_correct"] = outcome.pose.box_correct;
+    }
+    outcomes.push_back(entry);
+  }
+  return outcomes;
+}
+
+nlohmann::json EvalReportJson(const EvalRunInfo& info, const MethodSummary& summary,
+                              const MethodRun& run) {
+  return {{"tool_version", ToolVersion()},
+          {"created_utc", UtcTimestamp()},
+          {"setup", RunInfoJson(info)},
+          {"summary", SummaryJson(summary)},
+          {"outcomes", OutcomesJson(run)}};
+}
+
+std::string SummaryTable(const MethodSummary& summary) {
+  std::string table =
+      "| Object | Metric | Frames | Accuracy (%) | Proj2D (%) | Detection (%) | Mean time (ms) | "
+      "Median time (ms) |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const ObjectSummary& object : summary.objects) {
+    table +=
+        TableRow(std::to_string(object.obj_id), object.symmetric_metric ? "ADD-S" : "ADD", object);
+  }
+  table += TableRow("all", "", summary.overall);
+  return table;
+}
+
+std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary) {
+  std::string archives;
+  for (const std::string& archive : info.archives)
+    archives += (archives.empty() ? "" : ", ") + archive;
+  std::string text = "# LayerMOD evaluation\n\n";
+  text += "- dataset: `" + info.dataset_dir + "`" +
+          (info.scene_id ? " (scene " + std::to_string(*info.scene_id) + ")" : "") + "\n";
+  text += "- archives: " + archives + "\n";
+  text += "- mode: " + info.mode + "\n";
+  if (!info.targets_file.empty()) text += "- targets: `" + info.targets_file + "`\n";
+  text += "- correct: ADD (ADD-S for symmetric objects) <= " + Fixed(info.metrics.km, 2) +
+          " x diameter; Proj2D <= " + Fixed(info.metrics.proj2d_threshold_px, 1) +
+          " px; detection: projected box IoU >= " + Fixed(info.metrics.min_box_iou, 2) + "\n";
+  text += "- instances with visibility >= " + Fixed(info.min_visib_fract, 2) + "; " +
+          std::to_string(summary.frames) + " frames\n";
+  text += "- layermod " + ToolVersion() + ", " + UtcTimestamp() + "\n\n";
+  text += SummaryTable(summary);
+  text += "\nMean accuracy over objects: " + Fixed(summary.mean_object_accuracy_percent, 1) +
+          " %. Time per frame: mean " + Fixed(summary.mean_frame_ms, 1) + " ms, median " +
+          Fixed(summary.median_frame_ms, 1) + " ms, p90 " + Fixed(summary.p90_frame_ms, 1) +
+          " ms.\n";
+  return text;
+}
+
+void CheckReportFolder(const std::filesystem::path& out_dir) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(out_dir, ec)) {
+    CheckWritableTarget(out_dir / "report.json");
+  } else {
+    CheckWritableTarget(out_dir);
+  }
+}
+
+void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& info,
+                     const MethodSummary& summary, const MethodRun& run) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec) throw IoError(Quoted(out_dir) + ": cannot create the folder (" + ec.message() + ")");
+  WriteFileAtomically(out_dir / "report.json", EvalReportJson(info, summary, run).dump(2) + "\n");
+  WriteFileAtomically(out_dir / "report.md", EvalReportMarkdown(info, summary));
+}
+
+}  // namespace layermod

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+// report.json and report.md of `layermod eval`, and the table it prints.
+
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "eval/eval_runner.h"
+#include "eval/eval_summary.h"
+
+namespace layermod {
+
+// How the run was set up, recorded so a report says what it measured.
+struct EvalRunInfo {
+  std::string dataset_dir;
+  std::vector<std::string> archives;
+  std::string mode;
+  std::string targets_file;  // empty: every annotated instance of the archives' objects
+  std::optional<int> scene_id;
+  double min_visib_fract = 0.5;
+  int max_frames = 0;
+  EvalMetricOptions metrics;
+};
+
+// UTC now as ISO 8601 ("2026-11-22T07:00:00Z").
+std::string UtcTimestamp();
+
+nlohmann::json RunInfoJson(const EvalRunInfo& info);
+nlohmann::json SummaryJson(const MethodSummary& summary);
+nlohmann::json OutcomesJson(const MethodRun& run);
+
+// {tool_version, created_utc, setup, summary, outcomes}.
+nlohmann::json EvalReportJson(const EvalRunInfo& info, const MethodSummary& summary,
+                              const MethodRun& run);
+
+// A Markdown table, one row per object plus "all" (the paper's Table 4 with more columns).
+std::string SummaryTable(const MethodSummary& summary);
+std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary);
+
+// Throws IoError unless `out_dir` is a writable folder or can be created as one (its parent is a
+// writable folder): lets a run fail before the work rather than after it.
+void CheckReportFolder(const std::filesystem::path& out_dir);
+
+// Creates `out_dir` if needed and writes report.json and report.md atomically. Throws IoError.
+void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& info,
+                     const MethodSummary& summary, const MethodRun& run);
+
+}  // namespace layermod

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#include "eval/evaluation.h"
+
+#include <algorithm>
+#include <set>
+#include <string>
+
+#include "util/error.h"
+#include "util/quoted.h"
+
+namespace layermod {
+namespace {
+
+void CheckSceneExists(const std::vector<BopScene>& scenes, const FrameSelectionOptions& selection,
+                      const std::filesystem::path& dataset_dir) {
+  if (!selection.scene_id) return;
+  for (const BopScene& scene : scenes) {
+    if (scene.scene_id == *selection.scene_id) return;
+  }
+  throw Error(Quoted(dataset_dir) + ": there is no scene " + std::to_string(*selection.scene_id));
+}
+
+void CheckDepth(const EvalPlan& plan) {
+  for (const EvalFrame& frame : plan.frames) {
+    const BopScene& scene = plan.dataset.scenes[frame.scene_index];
+    if (!scene.has_depth) {
+      throw Error(Quoted(scene.dir) + " has no depth images; this mode needs depth (use the " +
+                  "colour-only mode for RGB datasets)");
+    }
+  }
+}
+
+}  // namespace
+
+bool ModeNeedsDepth(DetectionMode mode) { return mode != DetectionMode::kColorOnly; }
+
+EvalPlan PlanEvaluation(const std::filesystem::path& dataset_dir,
+                        const std::vector<std::int32_t>& obj_ids,
+                        const FrameSelectionOptions& selection, bool needs_depth) {
+  selection.Validate();
+  EvalPlan plan;
+  plan.dataset.dir = dataset_dir;
+  plan.dataset.scenes = ListBopScenes(dataset_dir);
+  CheckSceneExists(plan.dataset.scenes, selection, dataset_dir);
+  plan.frames =
+      SelectEvalFrames(plan.dataset.scenes, std::set<std::int32_t>(obj_ids.begin(), obj_ids.end()),
+                       selection, dataset_dir);
+  if (needs_depth) CheckDepth(plan);
+  plan.dataset.models = LoadEvalModels(FindBopModelsDir(dataset_dir), obj_ids);
+  return plan;
+}
+
+EvalMethod DetectorMethod(const Detector& detector, const DetectorOptions& options) {
+  return {std::string(ModeName(options.mode)), [&detector, options](const BopFrame& frame) {
+            return detector.Detect(Capture{frame.color, frame.depth_mm, frame.camera}, options)
+                .detections;
+          }};
+}
+
+std::vector<std::int32_t> DetectorObjectIds(const Detector& detector) {
+  std::vector<std::int32_t> ids;
+  for (const TemplateArchive& archive : detector.archives()) {
+    for (const ArchiveObject& object : archive.manifest().objects) ids.push_back(object.obj_id);
+  }
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+Evaluation Evaluate(const Detector& detector, const DetectorOptions& options,
+                    const std::filesystem::path& dataset_dir,
+                    const FrameSelectionOptions& selection, const EvalMetricOptions& metrics,
+                    const JobControl& job) {
+  options.Validate();
+  metrics.Validate();
+  const EvalPlan plan = PlanEvaluation(dataset_dir, DetectorObjectIds(detector), selection,
+                                       ModeNeedsDepth(options.mode));
+  std::vector<MethodRun> runs =
+      RunMethods(plan.dataset, plan.frames, {DetectorMethod(detector, options)}, metrics, job);
+  Evaluation evaluation;
+  evaluation.run = std::move(runs.front());
+  evaluation.summary = Summarize(evaluation.run, plan.dataset.models);
+  return evaluation;
+}
+
+}  // namespace layermod

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#include "eval/eval_summary.h"
+
+#include <gtest/gtest.h>
+
+namespace layermod {
+namespace {
+
+TargetOutcome Outcome(std::int32_t obj_id, bool detected, bool correct, bool proj2d, bool box,
+                      double time_ms) {
+  TargetOutcome outcome;
+  outcome.obj_id = obj_id;
+  outcome.detected = detected;
+  outcome.pose.correct = correct;
+  outcome.pose.proj2d_correct = proj2d;
+  outcome.pose.box_correct = box;
+  outcome.frame_time_ms = time_ms;
+  return outcome;
+}
+
+std::map<std::int32_t, EvalModel> Models() {
+  std::map<std::int32_t, EvalModel> models;
+  models.emplace(1, EvalModel(1, 80.0, false, {Eigen::Vector3d::Zero()}));
+  models.emplace(2, EvalModel(2, 120.0, true, {Eigen::Vector3d::Zero()}));
+  return models;
+}
+
+TEST(EvalSummaryTest, Quantiles) {
+  EXPECT_EQ(Quantile({}, 0.5), 0.0);
+  EXPECT_EQ(Quantile({7.0}, 0.9), 7.0);
+  EXPECT_DOUBLE_EQ(Quantile({4.0, 1.0, 3.0, 2.0}, 0.5), 2.5);
+  // 10 values 1..10: rank 0.9 * 9 = 8.1 -> 9.1.
+  EXPECT_DOUBLE_EQ(Quantile({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 0.9), 9.1);
+}
+
+TEST(EvalSummaryTest, CountsPerObjectAndOverall) {
+  MethodRun run;
+  run.name = "scene-patch";
+  // Object 1: 4 frames, 3 detected, 2 correct, 3 in 2D, 3 boxes. Object 2: 1 frame, correct.
+  run.outcomes = {Outcome(1, true, true, true, true, 10), Outcome(1, true, true, true, true, 20),
+                  Outcome(1, true, false, true, true, 30),
+                  Outcome(1, false, false, false, false, 40),
+                  Outcome(2, true, true, false, true, 40)};
+  run.frame_times_ms = {10, 20, 30, 40};  // object 2 shares the last frame with object 1
+  const MethodSummary summary = Summarize(run, Models());
+  EXPECT_EQ(summary.name, "scene-patch");
+  ASSERT_EQ(summary.objects.size(), 2u);
+  const ObjectSummary& first = summary.objects[0];
+  EXPECT_EQ(first.obj_id, 1);
+  EXPECT_EQ(first.frames, 4);
+  EXPECT_EQ(first.detected, 3);
+  EXPECT_DOUBLE_EQ(first.AccuracyPercent(), 50.0);
+  EXPECT_DOUBLE_EQ(first.Proj2DPercent(), 75.0);
+  EXPECT_DOUBLE_EQ(first.DetectionRatePercent(), 75.0);
+  EXPECT_DOUBLE_EQ(first.mean_time_ms, 25.0);
+  EXPECT_DOUBLE_EQ(first.median_time_ms, 25.0);
+  EXPECT_DOUBLE_EQ(first.diameter_mm, 80.0);
+  EXPECT_TRUE(summary.objects[1].symmetric_metric);
+  EXPECT_DOUBLE_EQ(summary.objects[1].AccuracyPercent(), 100.0);
+  EXPECT_EQ(summary.overall.frames, 5);
+  EXPECT_DOUBLE_EQ(summary.overall.AccuracyPercent(), 60.0);
+  EXPECT_DOUBLE_EQ(summary.mean_object_accuracy_percent, 75.0);
+  EXPECT_EQ(summary.frames, 4);
+  EXPECT_DOUBLE_EQ(summary.mean_frame_ms, 25.0);
+  EXPECT_DOUBLE_EQ(summary.p90_frame_ms, 37.0);
+}
+
+TEST(EvalSummaryTest, AnEmptyRunHasZeroRates) {
+  const MethodSummary summary = Summarize(MethodRun{}, Models());
+  EXPECT_TRUE(summary.objects.empty());
+  EXPECT_EQ(summary.overall.AccuracyPercent(), 0.0);
+  EXPECT_EQ(summary.median_frame_ms, 0.0);
+}
+
+}  // namespace
+}  // namespace layermod
