@@ -8,7 +8,9 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 
+#include "ui/detection_panel.h"
 #include "ui/job_runner.h"
 #include "ui/log_dock.h"
 #include "ui/model_panel.h"
@@ -38,12 +40,17 @@ MainWindow::MainWindow(QWidget* parent)
       views_panel_(new ViewsPanel(session_)),
       training_panel_(
           new TrainingPanel(session_, runner_, [this] { return views_panel_->request(); })),
-      browser_(new TemplateBrowser(session_)) {
+      browser_(new TemplateBrowser(session_)),
+      detection_panel_(new DetectionPanel(session_, runner_)),
+      tabs_(new QTabWidget) {
   InitStudioResources();
   setWindowTitle(tr("LayerMOD Studio"));
   setWindowIcon(QIcon(":/icons/layermod-studio.svg"));
   setAcceptDrops(true);
-  setCentralWidget(scene_);
+  tabs_->setObjectName("centralTabs");
+  tabs_->addTab(scene_, tr("3D view"));
+  tabs_->addTab(detection_panel_, tr("Detection preview"));
+  setCentralWidget(tabs_);
   QDockWidget* model_dock = AddDock(model_panel_, tr("Model"), "ModelDock", Qt::LeftDockWidgetArea);
   AddDock(training_panel_, tr("Training"), "TrainingDock", Qt::LeftDockWidgetArea);
   QDockWidget* views_dock =
@@ -56,7 +63,7 @@ MainWindow::MainWindow(QWidget* parent)
   auto* recent_menu = new QMenu(tr("Recent &files"), this);
   files_ = new StudioFiles(this, session_, runner_, {model_panel_, views_panel_, training_panel_},
                            new RecentFiles(recent_menu, this));
-  BuildWindowMenus(this, files_, recent_menu, scene_);
+  BuildWindowMenus(this, files_, recent_menu, scene_, detection_panel_);
   Wire();
   resize(1600, 1000);
   // The 3D view gets most of the window until the user arranges the docks (restored below).
@@ -103,6 +110,10 @@ void MainWindow::Wire() {
   connect(model_panel_, &ModelPanel::OpenRequested, files_, &StudioFiles::OpenMeshDialog);
   connect(training_panel_, &TrainingPanel::ExportRequested, files_,
           &StudioFiles::ExportArchiveDialog);
+  connect(detection_panel_, &DetectionPanel::OpenArchiveRequested, files_,
+          &StudioFiles::OpenArchiveDialog);
+  connect(detection_panel_, &DetectionPanel::CaptureOpened, this,
+          [this] { tabs_->setCurrentWidget(detection_panel_); });
   ShowJobFeedback(this, runner_);
   connect(session_, &StudioSession::ArchiveChanged, this, [this] {
     scene_->ClearHighlight();
@@ -122,6 +133,7 @@ void MainWindow::OpenFiles(const QStringList& paths) { files_->OpenFiles(paths);
 
 bool MainWindow::IsIdle() const {
   return !runner_->busy() && !files_->has_queued_files() &&
+         !detection_panel_->has_pending_work() &&
          browser_->list_model()->pending_thumbnails() == 0;
 }
 

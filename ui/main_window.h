@@ -3,8 +3,11 @@
 
 #include <QMainWindow>
 
+class QTabWidget;
+
 namespace layermod::ui {
 
+class DetectionPanel;
 class JobRunner;
 class LogDock;
 class ModelPanel;
@@ -30,12 +33,14 @@ class MainWindow : public QMainWindow {
   ViewsPanel* views_panel() const { return views_panel_; }
   TrainingPanel* training_panel() const { return training_panel_; }
   TemplateBrowser* browser() const { return browser_; }
+  DetectionPanel* detection_panel() const { return detection_panel_; }
+  QTabWidget* tabs() const { return tabs_; }
   LogDock* log_dock() const { return log_dock_; }
   StudioFiles* files() const { return files_; }
 
   // Meshes and *.layermod archives, opened in order (command line, drops).
   void OpenFiles(const QStringList& paths);
-  // No job runs, no file waits, no thumbnail is being rendered.
+  // No job runs or waits, no file waits, no thumbnail is being rendered.
   bool IsIdle() const;
 
  protected:
@@ -57,6 +62,8 @@ class MainWindow : public QMainWindow {
   ViewsPanel* views_panel_;
   TrainingPanel* training_panel_;
   TemplateBrowser* browser_;
+  DetectionPanel* detection_panel_;
+  QTabWidget* tabs_;
   StudioFiles* files_ = nullptr;
 };
 

@@ -9,6 +9,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include "ui/detection_panel.h"
 #include "ui/job_runner.h"
 #include "ui/scene_view.h"
 #include "ui/studio_dialogs.h"
@@ -28,7 +29,8 @@ void ShowAbout(QWidget* parent) {
                          .arg(QString::fromStdString(ToolVersion())));
 }
 
-void BuildFileMenu(QMainWindow* window, StudioFiles* files, QMenu* recent_menu, QToolBar* tools) {
+void BuildFileMenu(QMainWindow* window, StudioFiles* files, QMenu* recent_menu,
+                   DetectionPanel* detection, QToolBar* tools) {
   QMenu* file = window->menuBar()->addMenu(QObject::tr("&File"));
   auto add = [file, files, tools](const QString& text, const QKeySequence& keys, auto slot,
                                   bool on_toolbar) {
@@ -39,6 +41,11 @@ void BuildFileMenu(QMainWindow* window, StudioFiles* files, QMenu* recent_menu, 
   add(QObject::tr("Open &archive…"), QKeySequence(QObject::tr("Ctrl+Shift+O")),
       &StudioFiles::OpenArchiveDialog, true);
   file->addMenu(recent_menu);
+  file->addSeparator();
+  tools->addAction(file->addAction(QObject::tr("Open &BOP frame…"), detection,
+                                   &DetectionPanel::OpenBopFrameDialog));
+  file->addAction(QObject::tr("Open &colour + depth capture…"), detection,
+                  &DetectionPanel::OpenCaptureFilesDialog);
   file->addSeparator();
   add(QObject::tr("&Load training profile…"), QKeySequence(), &StudioFiles::LoadProfileDialog,
       false);
@@ -71,10 +78,10 @@ void BuildViewMenu(QMainWindow* window, SceneView* scene, QToolBar* tools) {
 }  // namespace
 
 void BuildWindowMenus(QMainWindow* window, StudioFiles* files, QMenu* recent_menu,
-                      SceneView* scene) {
+                      SceneView* scene, DetectionPanel* detection) {
   QToolBar* tools = window->addToolBar(QObject::tr("Main"));
   tools->setObjectName("MainToolBar");
-  BuildFileMenu(window, files, recent_menu, tools);
+  BuildFileMenu(window, files, recent_menu, detection, tools);
   BuildViewMenu(window, scene, tools);
   QMenu* help = window->menuBar()->addMenu(QObject::tr("&Help"));
   help->addAction(QObject::tr("&About LayerMOD Studio"), window, [window] { ShowAbout(window); });

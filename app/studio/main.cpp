@@ -6,10 +6,51 @@
 #include <QSurfaceFormat>
 #include <cstdio>
 
+#include "ui/capture_source.h"
+#include "ui/detection_panel.h"
 #include "ui/main_window.h"
 #include "ui/screenshot.h"
 #include "ui/studio_dialogs.h"
 #include "util/version.h"
+
+namespace {
+
+struct CaptureOptions {
+  QCommandLineOption bop{"bop", "Detection preview: BOP split folder of the capture.", "dir"};
+  QCommandLineOption scene{"scene", "BOP scene id (with --bop).", "id", "1"};
+  QCommandLineOption frame{"frame", "BOP image id (with --bop).", "id", "0"};
+  QCommandLineOption color{"color", "Detection preview: colour image of the capture.", "png"};
+  QCommandLineOption depth{"depth", "16-bit depth PNG in mm (with --color).", "png"};
+  QCommandLineOption camera{"camera", "BOP camera.json (with --color).", "json"};
+  QCommandLineOption overlays{
+      "overlays", "Overlays shown: any of regions,coarse,matches,poses (default: poses).", "list"};
+
+  void AddTo(QCommandLineParser& parser) const {
+    parser.addOptions({bop, scene, frame, color, depth, camera, overlays});
+  }
+};
+
+// The capture asked for on the command line, if any.
+bool CaptureFromArguments(const QCommandLineParser& parser, const CaptureOptions& options,
+                          layermod::ui::CaptureSource* source) {
+  if (parser.isSet(options.bop)) {
+    *source = {parser.value(options.bop), parser.value(options.scene).toInt(),
+               parser.value(options.frame).toInt(), {}, {}, {}};
+    return true;
+  }
+  if (!parser.isSet(options.color)) return false;
+  *source = {{}, 0, 0, parser.value(options.color), parser.value(options.depth),
+             parser.value(options.camera)};
+  return true;
+}
+
+layermod::ui::OverlayToggles OverlaysFromArgument(const QString& list) {
+  const QStringList names = list.split(',', Qt::SkipEmptyParts);
+  return {names.contains("regions"), names.contains("coarse"), names.contains("matches"),
+          names.contains("poses")};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // VTK's OpenGL widget needs its surface format before the application exists.
@@ -27,6 +68,8 @@ int main(int argc, char** argv) {
       "screenshot", "Open FILES, wait until everything is shown, save the window to PNG and exit.",
       "png");
   parser.addOption(screenshot);
+  const CaptureOptions capture_options;
+  capture_options.AddTo(parser);
   parser.addPositionalArgument("files", "Meshes and *.layermod archives to open.", "[files...]");
   parser.process(app);
 
@@ -35,6 +78,14 @@ int main(int argc, char** argv) {
   layermod::ui::MainWindow window;
   window.show();
   window.OpenFiles(parser.positionalArguments());
+  if (parser.isSet(capture_options.overlays)) {
+    window.detection_panel()->SetOverlays(
+        OverlaysFromArgument(parser.value(capture_options.overlays)));
+  }
+  layermod::ui::CaptureSource capture;
+  if (CaptureFromArguments(parser, capture_options, &capture)) {
+    window.detection_panel()->OpenCapture(capture);
+  }
   if (batch) {
     const QString path = parser.value(screenshot);
     layermod::ui::SaveScreenshotWhenIdle(&window, path, [&app, path](bool ok) {

@@ -9,7 +9,10 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include "dataset/bop_writer.h"
 #include "mesh/sample_part.h"
+#include "pipeline/training.h"
+#include "render/rasterizer.h"
 
 namespace layermod::ui::test {
 
@@ -44,6 +47,61 @@ TrainingProfile TinyProfile() {
   profile.views.roll = {0.0, 10.0, 0.0};
   profile.views.even_spacing_deg = 0.0;
   return profile;
+}
+
+namespace {
+
+// The frame: the part at `record`'s pose over a grey wall one radius behind the sphere centre.
+BopFrame RenderFrameAt(const Model& model, const TemplateRecord& record,
+                       const PinholeCamera& camera) {
+  RenderOptions options;
+  options.window = RenderWindow::kFullImage;
+  const RenderedView view = RenderView(ToRenderMesh(model), camera, record.cam_from_model, options);
+  BopFrame frame;
+  frame.scene_id = 1;
+  frame.image_id = 0;
+  frame.camera = camera;
+  frame.color = cv::Mat(view.mask.size(), CV_8UC3, cv::Scalar(90, 95, 100));
+  view.color.copyTo(frame.color, view.mask);
+  const double wall_mm = record.layer_depth_mm + model.sphere.radius;
+  frame.depth_mm = cv::Mat(view.mask.size(), CV_32F, cv::Scalar(wall_mm));
+  view.depth_mm.copyTo(frame.depth_mm, view.mask);
+  frame.gt.push_back({record.obj_id, record.cam_from_model});
+  return frame;
+}
+
+SyntheticCapture WriteSyntheticCapture() {
+  const QDir dir(QDir(ScratchDir()).filePath("capture"));
+  QDir().mkpath(dir.path());
+  const Model model = LoadModel(SampleMeshPath().toStdString());
+  TrainingRequest request;
+  request.name = "bracket";
+  request.camera = LoadCameraJson(LAYERMOD_SOURCE_DIR "/resources/sample/camera.json");
+  request.profile = TinyProfile();
+  const TrainingResult trained = TrainTemplates(model, request);
+  SyntheticCapture files;
+  files.archive = dir.filePath("bracket.layermod");
+  WriteArchive(files.archive.toStdString(), trained.archive);
+
+  // A template of the middle layer, so the wall lies within the trained depth range too.
+  const auto& templates = trained.archive.templates();
+  const TemplateRecord& record = templates[templates.size() / 2 + 1];
+  files.bop_dir = dir.filePath("test");
+  BopSceneWriter writer(dir.filePath("test/000001").toStdString());
+  writer.AddFrame(RenderFrameAt(model, record, request.camera));
+  writer.Finish();
+  files.color = dir.filePath("test/000001/rgb/000000.png");
+  files.depth = dir.filePath("test/000001/depth/000000.png");
+  files.camera = dir.filePath("camera.json");
+  WriteBopCamera(files.camera.toStdString(), request.camera);
+  return files;
+}
+
+}  // namespace
+
+const SyntheticCapture& SyntheticCaptureFiles() {
+  static const SyntheticCapture files = WriteSyntheticCapture();
+  return files;
 }
 
 MessageBoxCloser::MessageBoxCloser(int button) : button_(button) {

@@ -29,6 +29,18 @@ QString ScratchDir();
 // templates for the sample part; trains in well under a second.
 TrainingProfile TinyProfile();
 
+// A template set of the sample part (TinyProfile, the bundled camera) and one RGB-D frame of
+// the part rendered at the pose of one of its templates, in front of a wall, written both as a
+// BOP scene and as colour + depth PNG + camera.json. Built once per process.
+struct SyntheticCapture {
+  QString archive;  // *.layermod
+  QString bop_dir;  // split folder holding scene 000001 with frame 0
+  QString color;
+  QString depth;
+  QString camera;
+};
+const SyntheticCapture& SyntheticCaptureFiles();
+
 // Closes the next modal message box with `button` once it appears and records its texts.
 class MessageBoxCloser : public QObject {
   Q_OBJECT

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+#include <QCheckBox>
+#include <QDir>
+#include <QLabel>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTest>
+
+#include "ui/detection_panel.h"
+#include "ui/image_view.h"
+#include "ui/job_runner.h"
+#include "ui/main_window.h"
+#include "ui/studio_session.h"
+#include "ui_test_support.h"
+
+namespace layermod::ui::test {
+
+class DetectionPanelTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() { QVERIFY(!SyntheticCaptureFiles().archive.isEmpty()); }
+
+  void init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->show();
+    window_->OpenFiles({SyntheticCaptureFiles().archive});
+    QTRY_VERIFY_WITH_TIMEOUT(window_->session()->archive() != nullptr, 20000);
+    QTRY_VERIFY(!window_->runner()->busy());
+  }
+  void cleanup() { window_.reset(); }
+
+  void BopFrameIsDetectedIntoTheTable() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy finished(panel, &DetectionPanel::DetectionFinished);
+    panel->OpenCapture({files.bop_dir, 1, 0, {}, {}, {}});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QCOMPARE(window_->tabs()->currentWidget(), panel);
+    QVERIFY(panel->table()->rowCount() >= 1);
+    QVERIFY2(panel->table()->item(0, 0)->text().contains("bracket"),
+             qPrintable(panel->table()->item(0, 0)->text()));
+    QVERIFY(window_->findChild<QLabel*>("timingsLabel")->text().contains("total"));
+    QVERIFY(window_->findChild<QLabel*>("layerLegend")->text().contains("mm"));
+  }
+
+  void EachOverlayToggles() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy finished(panel, &DetectionPanel::DetectionFinished);
+    panel->OpenCapture({files.bop_dir, 1, 0, {}, {}, {}});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QVERIFY(!panel->result()->detections.empty());
+    QVERIFY(!panel->result()->diagnostics.empty());
+
+    panel->SetOverlays({false, false, false, false});
+    const QImage plain = panel->image_view()->image();
+    QVERIFY(!plain.isNull());
+    for (int overlay = 0; overlay < 4; ++overlay) {
+      QCheckBox* toggle = panel->overlay_toggle(overlay);
+      toggle->click();
+      QVERIFY2(panel->image_view()->image() != plain, qPrintable(toggle->text()));
+      toggle->click();
+      QCOMPARE(panel->image_view()->image(), plain);
+    }
+  }
+
+  void ColourDepthFilesAreDetected() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy finished(panel, &DetectionPanel::DetectionFinished);
+    panel->OpenCapture({{}, 0, 0, files.color, files.depth, files.camera});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QVERIFY(panel->table()->rowCount() >= 1);
+    QVERIFY(window_->findChild<QLabel*>("captureLabel")->text().contains("with depth"));
+  }
+
+  void MissingFrameShowsAnErrorNamingTheFolder() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    MessageBoxCloser closer(QMessageBox::Ok);
+    window_->detection_panel()->OpenCapture({files.bop_dir, 1, 7, {}, {}, {}});
+    QTRY_VERIFY_WITH_TIMEOUT(closer.seen(), 20000);
+    QCOMPARE(closer.object_name(), QStringLiteral("errorDialog"));
+    QVERIFY2(closer.text().contains(files.bop_dir), qPrintable(closer.text()));
+    QVERIFY(!window_->detection_panel()->has_capture());
+  }
+
+  void UnreadableColourShowsAnErrorNamingTheFile() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    const QString missing = QDir(ScratchDir()).filePath("no_such_colour.png");
+    MessageBoxCloser closer(QMessageBox::Ok);
+    window_->detection_panel()->OpenCapture({{}, 0, 0, missing, files.depth, files.camera});
+    QTRY_VERIFY_WITH_TIMEOUT(closer.seen(), 20000);
+    QVERIFY2(closer.text().contains(missing), qPrintable(closer.text()));
+  }
+
+ private:
+  std::unique_ptr<MainWindow> window_;
+};
+
+LAYERMOD_UI_TEST(DetectionPanelTest);
+
+}  // namespace layermod::ui::test
+
+#include "detection_panel_test.moc"

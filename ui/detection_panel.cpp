@@ -1,0 +1,379 @@
+// SPDX-License-Identifier: MIT
+#include "ui/detection_panel.h"
+
+#include <QCheckBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include "pipeline/overlays.h"
+#include "ui/detection_options_form.h"
+#include "ui/detection_table.h"
+#include "ui/image_convert.h"
+#include "ui/image_view.h"
+#include "ui/job_runner.h"
+#include "ui/studio_dialogs.h"
+#include "ui/studio_session.h"
+#include "util/log.h"
+
+namespace layermod::ui {
+namespace {
+
+constexpr int kControlsWidthPx = 330;
+
+QString ImageFileFilter() {
+  return QObject::tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr);;All files (*)");
+}
+
+QString LegendHtml(const ArchiveObject& object) {
+  const int layers = static_cast<int>(object.layer_depths_mm.size());
+  QString html = QStringLiteral("<b>%1</b> layers:<br>").arg(QString::fromStdString(object.name).toHtmlEscaped());
+  for (int i = 0; i < layers; ++i) {
+    const cv::Scalar bgr = LayerColor(i, layers);
+    const QColor colour(static_cast<int>(bgr[2]), static_cast<int>(bgr[1]), static_cast<int>(bgr[0]));
+    html += QStringLiteral("<span style=\"background-color:%1\">&nbsp;&nbsp;&nbsp;&nbsp;</span> "
+                           "%2: %3 mm<br>")
+                .arg(colour.name())
+                .arg(i)
+                .arg(object.layer_depths_mm[static_cast<std::size_t>(i)], 0, 'f', 0);
+  }
+  return html;
+}
+
+}  // namespace
+
+DetectionPanel::DetectionPanel(StudioSession* session, JobRunner* runner, QWidget* parent)
+    : QWidget(parent),
+      session_(session),
+      runner_(runner),
+      bop_dir_(new QLineEdit),
+      scene_(new QSpinBox),
+      frame_(new QSpinBox),
+      capture_label_(new QLabel(tr("No capture"))),
+      archive_label_(new QLabel),
+      options_(new DetectionOptionsForm),
+      detect_on_load_(new QCheckBox(tr("Detect on load"))),
+      detect_(new QPushButton(tr("Detect"))),
+      legend_(new QLabel),
+      image_(new ImageView),
+      table_(new QTableWidget),
+      timings_(new QLabel) {
+  auto* controls = new QWidget;
+  controls->setFixedWidth(kControlsWidthPx);
+  auto* controls_layout = new QVBoxLayout(controls);
+  controls_layout->setContentsMargins(0, 0, 0, 0);
+  controls_layout->addWidget(BuildCaptureBox());
+  controls_layout->addWidget(BuildDetectBox());
+  controls_layout->addWidget(BuildOverlayBox());
+  controls_layout->addStretch();
+  auto* layout = new QHBoxLayout(this);
+  layout->addWidget(controls);
+  layout->addWidget(BuildResultsArea(), 1);
+
+  options_->RestoreSettings();
+  QSettings settings;
+  bop_dir_->setText(settings.value("detection/bop_dir").toString());
+  scene_->setValue(settings.value("detection/scene", 1).toInt());
+  frame_->setValue(settings.value("detection/frame", 0).toInt());
+  detect_on_load_->setChecked(settings.value("detection/detect_on_load", true).toBool());
+
+  connect(detect_, &QPushButton::clicked, this, &DetectionPanel::Detect);
+  connect(runner_, &JobRunner::BusyChanged, this, [this](bool busy) {
+    if (!busy) RunPending();
+    UpdateState();
+  });
+  connect(session_, &StudioSession::ArchiveChanged, this, &DetectionPanel::OnArchiveChanged);
+  UpdateState();
+}
+
+DetectionPanel::~DetectionPanel() {
+  QSettings settings;
+  settings.setValue("detection/detect_on_load", detect_on_load_->isChecked());
+  options_->SaveSettings();
+}
+
+QWidget* DetectionPanel::BuildCaptureBox() {
+  auto* box = new QGroupBox(tr("Capture"));
+  bop_dir_->setObjectName("bopDir");
+  bop_dir_->setPlaceholderText(tr("BOP split folder (holding 000001/ …)"));
+  scene_->setRange(0, 999999);
+  frame_->setRange(0, 999999);
+  auto* browse = new QPushButton(tr("Browse…"));
+  auto* load = new QPushButton(tr("Load frame"));
+  load->setObjectName("loadFrameButton");
+  auto* files = new QPushButton(tr("Colour + depth + camera…"));
+  capture_label_->setObjectName("captureLabel");
+  capture_label_->setWordWrap(true);
+  auto* dir_row = new QHBoxLayout;
+  dir_row->addWidget(bop_dir_, 1);
+  dir_row->addWidget(browse);
+  auto* frame_row = new QHBoxLayout;
+  frame_row->addWidget(new QLabel(tr("Scene")));
+  frame_row->addWidget(scene_);
+  frame_row->addWidget(new QLabel(tr("Frame")));
+  frame_row->addWidget(frame_);
+  frame_row->addWidget(load);
+  auto* layout = new QVBoxLayout(box);
+  layout->addLayout(dir_row);
+  layout->addLayout(frame_row);
+  layout->addWidget(files);
+  layout->addWidget(capture_label_);
+  connect(browse, &QPushButton::clicked, this, &DetectionPanel::OpenBopFrameDialog);
+  connect(load, &QPushButton::clicked, this, [this] {
+    if (bop_dir_->text().isEmpty()) return OpenBopFrameDialog();
+    OpenCapture({bop_dir_->text(), scene_->value(), frame_->value(), {}, {}, {}});
+  });
+  connect(files, &QPushButton::clicked, this, &DetectionPanel::OpenCaptureFilesDialog);
+  return box;
+}
+
+QWidget* DetectionPanel::BuildDetectBox() {
+  auto* box = new QGroupBox(tr("Detection"));
+  archive_label_->setObjectName("detectionArchiveLabel");
+  archive_label_->setWordWrap(true);
+  auto* open_archive = new QPushButton(tr("Open archive…"));
+  detect_->setObjectName("detectButton");
+  detect_on_load_->setObjectName("detectOnLoad");
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(open_archive);
+  buttons->addWidget(detect_);
+  auto* layout = new QVBoxLayout(box);
+  layout->addWidget(archive_label_);
+  layout->addWidget(options_);
+  layout->addWidget(detect_on_load_);
+  layout->addLayout(buttons);
+  connect(open_archive, &QPushButton::clicked, this, &DetectionPanel::OpenArchiveRequested);
+  return box;
+}
+
+QWidget* DetectionPanel::BuildOverlayBox() {
+  auto* box = new QGroupBox(tr("Overlays"));
+  auto* layout = new QVBoxLayout(box);
+  const QString titles[4] = {tr("Region division (blocks by layer)"),
+                             tr("Coarse positioning (kept / rejected)"), tr("Template matches"),
+                             tr("Final poses (contour and axes)")};
+  const char* names[4] = {"overlayRegions", "overlayCoarse", "overlayMatches", "overlayPoses"};
+  for (int i = 0; i < 4; ++i) {
+    toggles_[i] = new QCheckBox(titles[i]);
+    toggles_[i]->setObjectName(names[i]);
+    toggles_[i]->setChecked(i == 3);
+    layout->addWidget(toggles_[i]);
+    connect(toggles_[i], &QCheckBox::toggled, this, &DetectionPanel::RefreshImage);
+  }
+  legend_->setObjectName("layerLegend");
+  legend_->setTextFormat(Qt::RichText);
+  layout->addWidget(legend_);
+  return box;
+}
+
+QWidget* DetectionPanel::BuildResultsArea() {
+  image_->setObjectName("detectionImage");
+  table_->setObjectName("detectionTable");
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->verticalHeader()->setVisible(false);
+  FillDetectionTable(table_, {});
+  timings_->setObjectName("timingsLabel");
+  timings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* lower = new QWidget;
+  auto* lower_layout = new QVBoxLayout(lower);
+  lower_layout->setContentsMargins(0, 0, 0, 0);
+  lower_layout->addWidget(table_);
+  lower_layout->addWidget(timings_);
+  auto* splitter = new QSplitter(Qt::Vertical);
+  splitter->addWidget(image_);
+  splitter->addWidget(lower);
+  splitter->setStretchFactor(0, 4);
+  splitter->setStretchFactor(1, 1);
+  return splitter;
+}
+
+void DetectionPanel::OpenBopFrameDialog() {
+  QString start = bop_dir_->text();
+  if (start.isEmpty()) start = QSettings().value("dirs/capture").toString();
+  const QString dir =
+      QFileDialog::getExistingDirectory(this, tr("BOP split folder (e.g. test/)"), start);
+  if (dir.isEmpty()) return;
+  bop_dir_->setText(dir);
+  OpenCapture({dir, scene_->value(), frame_->value(), {}, {}, {}});
+}
+
+void DetectionPanel::OpenCaptureFilesDialog() {
+  const QString color = AskOpenPath(this, "capture", tr("Colour image"), ImageFileFilter());
+  if (color.isEmpty()) return;
+  const QString depth = AskOpenPath(this, "capture", tr("Depth image (16-bit PNG, mm; Cancel: none)"),
+                                    ImageFileFilter());
+  const QString camera = AskOpenPath(this, "camera", tr("Camera (BOP camera.json)"), JsonFileFilter());
+  if (camera.isEmpty()) return;
+  OpenCapture({{}, 0, 0, color, depth, camera});
+}
+
+void DetectionPanel::OpenCapture(const CaptureSource& source) {
+  RunWhenFree([this, source] { return StartLoad(source); });
+}
+
+bool DetectionPanel::Detect() {
+  if (capture_ == nullptr && pending_.empty()) return false;
+  if (session_->archive() == nullptr) return false;
+  RunWhenFree([this] { return StartDetect(); });
+  return true;
+}
+
+void DetectionPanel::RunWhenFree(std::function<bool()> start) {
+  pending_.push_back(std::move(start));
+  RunPending();
+  UpdateState();
+}
+
+void DetectionPanel::RunPending() {
+  while (!pending_.empty() && !runner_->busy()) {
+    const auto start = pending_.front();
+    pending_.erase(pending_.begin());
+    if (start()) return;
+  }
+}
+
+bool DetectionPanel::StartLoad(const CaptureSource& source) {
+  return runner_->Start(tr("Open capture %1").arg(source.Describe()),
+                        [this, source](const JobControl&) {
+                          auto capture = std::make_shared<const Capture>(LoadCaptureSource(source));
+                          return JobRunner::Commit(
+                              [this, source, capture] { ShowCapture(source, capture); });
+                        });
+}
+
+void DetectionPanel::ShowCapture(const CaptureSource& source,
+                                 std::shared_ptr<const Capture> capture) {
+  source_ = source;
+  capture_ = std::move(capture);
+  result_ = nullptr;
+  result_detector_ = nullptr;
+  if (source.is_bop()) {
+    QSettings settings;
+    settings.setValue("detection/bop_dir", source.bop_dir);
+    settings.setValue("detection/scene", source.scene_id);
+    settings.setValue("detection/frame", source.frame_id);
+    bop_dir_->setText(source.bop_dir);
+    scene_->setValue(source.scene_id);
+    frame_->setValue(source.frame_id);
+  }
+  capture_label_->setText(tr("%1<br>%2 × %3 px, %4")
+                              .arg(source.Describe().toHtmlEscaped())
+                              .arg(capture_->color.cols)
+                              .arg(capture_->color.rows)
+                              .arg(capture_->depth_mm.empty() ? tr("no depth") : tr("with depth")));
+  FillDetectionTable(table_, {});
+  timings_->clear();
+  RefreshImage();
+  UpdateState();
+  emit CaptureOpened();
+  if (detect_on_load_->isChecked() && session_->archive() != nullptr) Detect();
+}
+
+bool DetectionPanel::StartDetect() {
+  const auto archive = session_->archive();
+  const auto capture = capture_;
+  if (archive == nullptr || capture == nullptr) return false;
+  const DetectorOptions options = options_->options();
+  const auto cached = archive == detector_archive_ ? detector_ : nullptr;
+  const QString name = tr("Detect in %1 with %2").arg(source_.Describe(), ArchiveText());
+  return runner_->Start(name, [=, this](const JobControl& job) {
+    options.Validate();
+    auto detector = cached;
+    if (detector == nullptr) {
+      detector = std::make_shared<const Detector>(std::vector<TemplateArchive>{*archive});
+    }
+    job.ThrowIfCancelled();
+    auto result = std::make_shared<const DetectionResult>(detector->Detect(*capture, options));
+    return JobRunner::Commit([=, this] {
+      detector_archive_ = archive;
+      detector_ = detector;
+      if (capture == capture_) ShowResult(detector, result);
+    });
+  });
+}
+
+void DetectionPanel::ShowResult(std::shared_ptr<const Detector> detector,
+                                std::shared_ptr<const DetectionResult> result) {
+  result_detector_ = std::move(detector);
+  result_ = std::move(result);
+  FillDetectionTable(table_, result_->detections);
+  timings_->setText(FormatStageTimings(result_->timings));
+  LogInfo(std::to_string(result_->detections.size()) + " detection(s) in " +
+          source_.Describe().toStdString() + ", " + timings_->text().toStdString());
+  options_->SaveSettings();
+  RefreshImage();
+  UpdateLegend();
+  emit DetectionFinished();
+}
+
+void DetectionPanel::OnArchiveChanged() {
+  result_ = nullptr;
+  result_detector_ = nullptr;
+  FillDetectionTable(table_, {});
+  timings_->clear();
+  RefreshImage();
+  UpdateLegend();
+  UpdateState();
+  if (detect_on_load_->isChecked() && capture_ != nullptr && session_->archive() != nullptr) {
+    Detect();
+  }
+}
+
+OverlayToggles DetectionPanel::overlays() const {
+  return {toggles_[0]->isChecked(), toggles_[1]->isChecked(), toggles_[2]->isChecked(),
+          toggles_[3]->isChecked()};
+}
+
+void DetectionPanel::SetOverlays(const OverlayToggles& toggles) {
+  const bool values[4] = {toggles.regions, toggles.coarse, toggles.matches, toggles.poses};
+  for (int i = 0; i < 4; ++i) toggles_[i]->setChecked(values[i]);
+}
+
+void DetectionPanel::RefreshImage() {
+  if (capture_ == nullptr) return image_->SetImage({});
+  if (result_ == nullptr || result_detector_ == nullptr) {
+    return image_->SetImage(ToQImage(capture_->color));
+  }
+  image_->SetImage(
+      ToQImage(ComposeDetectionOverlays(*capture_, *result_, *result_detector_, overlays())));
+}
+
+void DetectionPanel::UpdateLegend() {
+  const auto archive = session_->archive();
+  QString html;
+  if (archive != nullptr) {
+    for (const ArchiveObject& object : archive->manifest().objects) html += LegendHtml(object);
+  }
+  legend_->setText(html);
+}
+
+QString DetectionPanel::ArchiveText() const {
+  const auto archive = session_->archive();
+  if (archive == nullptr) return tr("no template set");
+  if (session_->archive_path().isEmpty()) return tr("the trained set");
+  return QStringLiteral("“%1”").arg(QFileInfo(session_->archive_path()).fileName());
+}
+
+void DetectionPanel::UpdateState() {
+  const auto archive = session_->archive();
+  archive_label_->setText(archive == nullptr
+                              ? tr("No template set: train one or open an archive.")
+                              : tr("Templates: %1, %2 templates")
+                                    .arg(ArchiveText())
+                                    .arg(archive->templates().size()));
+  detect_->setEnabled(!runner_->busy() && capture_ != nullptr && archive != nullptr);
+}
+
+}  // namespace layermod::ui

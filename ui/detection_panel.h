@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QWidget>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "ui/capture_source.h"
+#include "ui/detection_overlays.h"
+
+class QCheckBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace layermod::ui {
+
+class DetectionOptionsForm;
+class ImageView;
+class JobRunner;
+class StudioSession;
+
+// Detection preview: a capture (BOP frame, or colour + depth + camera file) and the session's
+// template set; runs Detector on the worker thread and shows the capture with the stage overlays
+// (each toggleable), the detections and the per-stage timings. Jobs asked for while another runs
+// wait for it.
+class DetectionPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  DetectionPanel(StudioSession* session, JobRunner* runner, QWidget* parent = nullptr);
+  ~DetectionPanel() override;
+
+  // Reads the frame on the worker thread; detection follows when a template set is open and
+  // "Detect on load" is on. Failures show an error box naming the file.
+  void OpenCapture(const CaptureSource& source);
+  // Runs detection now (or once the running job ends); false without a capture or templates.
+  bool Detect();
+  void SetOverlays(const OverlayToggles& toggles);
+  OverlayToggles overlays() const;
+
+  bool has_capture() const { return capture_ != nullptr; }
+  bool has_result() const { return result_ != nullptr; }
+  const DetectionResult* result() const { return result_.get(); }
+  bool has_pending_work() const { return !pending_.empty(); }
+  ImageView* image_view() const { return image_; }
+  QTableWidget* table() const { return table_; }
+  QCheckBox* overlay_toggle(int index) const { return toggles_[index]; }  // pipeline order
+
+ public slots:
+  void OpenBopFrameDialog();
+  void OpenCaptureFilesDialog();
+
+ signals:
+  void CaptureOpened();
+  void DetectionFinished();
+  void OpenArchiveRequested();
+
+ private:
+  QWidget* BuildCaptureBox();
+  QWidget* BuildDetectBox();
+  QWidget* BuildOverlayBox();
+  QWidget* BuildResultsArea();
+  void RunWhenFree(std::function<bool()> start);
+  void RunPending();
+  bool StartLoad(const CaptureSource& source);
+  bool StartDetect();
+  void ShowCapture(const CaptureSource& source, std::shared_ptr<const Capture> capture);
+  void ShowResult(std::shared_ptr<const Detector> detector,
+                  std::shared_ptr<const DetectionResult> result);
+  void OnArchiveChanged();
+  void RefreshImage();
+  void UpdateLegend();
+  void UpdateState();
+  QString ArchiveText() const;
+
+  StudioSession* session_;
+  JobRunner* runner_;
+  std::vector<std::function<bool()>> pending_;
+  CaptureSource source_;
+  std::shared_ptr<const Capture> capture_;
+  // The detector is built once per template set; its archive copy outlives session changes.
+  std::shared_ptr<const TemplateArchive> detector_archive_;
+  std::shared_ptr<const Detector> detector_;
+  std::shared_ptr<const Detector> result_detector_;
+  std::shared_ptr<const DetectionResult> result_;
+
+  QLineEdit* bop_dir_;
+  QSpinBox* scene_;
+  QSpinBox* frame_;
+  QLabel* capture_label_;
+  QLabel* archive_label_;
+  DetectionOptionsForm* options_;
+  QCheckBox* detect_on_load_;
+  QPushButton* detect_;
+  QCheckBox* toggles_[4];
+  QLabel* legend_;
+  ImageView* image_;
+  QTableWidget* table_;
+  QLabel* timings_;
+};
+
+}  // namespace layermod::ui
