@@ -116,6 +116,7 @@ void OpenCvLinemod::AddTemplate(const TemplateArchive& archive, std::size_t reco
   class_templates[static_cast<std::size_t>(template_id)] =
       ClassTemplate{&archive, record_index, record.bbox_px.tl() - (view.roi.tl() + box.tl())};
   ++training_.templates;
+  training_.template_ids.push_back(record.id);
 }
 
 Detection OpenCvLinemod::ToDetection(const ClassTemplate& entry, cv::Point match_tl,

@@ -32,8 +32,9 @@ struct OpenCvLinemodOptions {
 };
 
 struct OpenCvLinemodTraining {
-  int templates = 0;  // added to cv::linemod
-  int refused = 0;    // archive templates cv::linemod found too few features in (or weak ones)
+  int templates = 0;                        // added to cv::linemod
+  std::vector<std::uint32_t> template_ids;  // their archive ids (TemplateRecord::id)
+  int refused = 0;  // archive templates cv::linemod found too few features in (or weak ones)
   double seconds = 0.0;
 };
 

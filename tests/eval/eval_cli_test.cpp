@@ -92,5 +92,31 @@ TEST_F(EvalCliTest, RefusesBadInputWithoutWritingAReport) {
   for (const char* name : {"r1", "r2", "r3", "r4"}) EXPECT_FALSE(fs::exists(out / name)) << name;
 }
 
+TEST_F(EvalCliTest, BenchWritesOneEntryPerMethod) {
+  test::TempDir out;
+  const test::CliResult result =
+      test::RunCli({"bench", "--archive", data_->archive_file.string(), "--dataset",
+                    data_->dataset.string(), "--frames", "2", "--out", (out / "b.json").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_THAT(result.output, HasSubstr("| cv::linemod | 2 |"));
+  const auto json = nlohmann::json::parse(ReadFileBytes(out / "b.json"));
+  ASSERT_EQ(json["methods"].size(), 3u);
+  EXPECT_EQ(json["methods"][0]["method"], "scene-patch");
+  EXPECT_EQ(json["methods"][0]["frames"], 2);
+  EXPECT_EQ(json["setup"]["max_frames"], 2);
+}
+
+TEST_F(EvalCliTest, BenchRefusesADatasetWithoutDepth) {
+  test::TempDir copy;
+  fs::copy(data_->dataset, copy.path(), fs::copy_options::recursive);
+  fs::remove_all(copy / "test" / "000001" / "depth");
+  const test::CliResult result =
+      test::RunCli({"bench", "--archive", data_->archive_file.string(), "--dataset",
+                    copy.path().string(), "--out", (copy / "b.json").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.output, HasSubstr("no depth images"));
+  EXPECT_FALSE(fs::exists(copy / "b.json"));
+}
+
 }  // namespace
 }  // namespace layermod

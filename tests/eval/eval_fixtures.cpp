@@ -3,6 +3,7 @@
 
 #include "mesh/model.h"
 #include "pipeline/training.h"
+#include "support/test_paths.h"
 #include "synth/synthesizer.h"
 #include "synth_fixtures.h"
 
@@ -10,13 +11,13 @@ namespace layermod::test {
 
 namespace {
 
-TrainingRequest SmallRequest() {
+TrainingRequest SmallRequest(double dmin_mm, double dmax_mm) {
   TrainingRequest request;
   request.obj_id = 1;
   request.name = "bracket";
   request.camera = SmallCamera();
-  request.profile.depth_min_mm = 600.0;
-  request.profile.depth_max_mm = 1200.0;
+  request.profile.depth_min_mm = dmin_mm;
+  request.profile.depth_max_mm = dmax_mm;
   request.profile.views.even_spacing_deg = 0.0;
   request.profile.views.azimuth = {0.0, 60.0, 300.0};
   request.profile.views.elevation = {20.0, 30.0, 80.0};
@@ -27,14 +28,18 @@ TrainingRequest SmallRequest() {
 
 }  // namespace
 
+TemplateArchive TrainBracketArchive(double dmin_mm, double dmax_mm) {
+  static const Model model = LoadModel(SourceDir() / "resources/sample/bracket.ply");
+  return TrainTemplates(model, SmallRequest(dmin_mm, dmax_mm)).archive;
+}
+
 TinyEvalData MakeTinyEvalData(const std::filesystem::path& dir, int images) {
   const std::filesystem::path models = WriteBracketModels(dir);
   TinyEvalData data;
   data.dataset = dir / "data";
   SynthOptions options = SmallOptions(models, {1}, images, data.dataset);
   SynthesizeScenes(options);
-  const Model model = LoadModel(models / "obj_000001.ply");
-  data.archive = TrainTemplates(model, SmallRequest()).archive;
+  data.archive = TrainBracketArchive(600.0, 1200.0);
   data.archive_file = dir / "bracket.layermod";
   WriteArchive(data.archive_file, data.archive);
   return data;

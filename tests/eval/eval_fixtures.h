@@ -14,6 +14,9 @@ struct TinyEvalData {
   TemplateArchive archive;  // object 1, the dataset's 320 x 240 camera
 };
 
+// A few dozen views of the bracket (obj 1, the synthetic camera) at the layers of dmin..dmax.
+TemplateArchive TrainBracketArchive(double dmin_mm, double dmax_mm);
+
 // `images` seeded synthetic images of object 1 (bracket) in `dir`/data and an archive of a few
 // dozen templates over 600..1200 mm in `dir`/bracket.layermod.
 TinyEvalData MakeTinyEvalData(const std::filesystem::path& dir, int images);

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// The bench's bookkeeping on a tiny synthetic dataset (no timing is asserted: speed belongs in
+// `layermod bench` runs, not in tests).
+#include "eval/bench.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "eval_fixtures.h"
+#include "support/test_paths.h"
+
+namespace layermod {
+namespace {
+
+constexpr int kImages = 3;
+
+TEST(BenchTest, RunsTheThreeMethodsOnTheSameFrames) {
+  test::TempDir dir;
+  const test::TinyEvalData data = test::MakeTinyEvalData(dir.path(), kImages);
+  const Detector detector({data.archive});
+  const BenchResult result = RunBench(detector, {}, data.dataset, {}, {});
+  EXPECT_EQ(result.templates, data.archive.templates().size());
+  ASSERT_EQ(result.methods.size(), 3u);
+  EXPECT_EQ(result.methods[0].name, "scene-patch");
+  EXPECT_EQ(result.methods[1].name, "exhaustive");
+  EXPECT_EQ(result.methods[2].name, "cv::linemod");
+  for (const MethodSummary& method : result.methods) {
+    EXPECT_EQ(method.frames, kImages);
+    EXPECT_EQ(method.overall.frames, kImages);
+    EXPECT_LE(method.overall.correct, method.overall.detected);
+    EXPECT_LE(method.median_frame_ms, method.p90_frame_ms);
+  }
+
+  EvalRunInfo info;
+  info.dataset_dir = data.dataset.string();
+  const nlohmann::json json = BenchReportJson(info, result);
+  ASSERT_EQ(json["methods"].size(), 3u);
+  EXPECT_EQ(json["methods"][2]["method"], "cv::linemod");
+  EXPECT_EQ(json["methods"][1]["frames"], kImages);
+  ASSERT_EQ(json["ratios"].size(), 2u);
+  EXPECT_EQ(json["ratios"][0]["relative_to"], "scene-patch");
+  const double expected_ratio =
+      result.methods[0].median_frame_ms > 0.0
+          ? result.methods[1].median_frame_ms / result.methods[0].median_frame_ms
+          : 0.0;
+  EXPECT_DOUBLE_EQ(json["ratios"][0]["median_time_ratio"].get<double>(), expected_ratio);
+  EXPECT_EQ(json["linemod_training"]["templates"], result.linemod_training.templates);
+  EXPECT_THAT(BenchTable(result), ::testing::HasSubstr("| cv::linemod | 3 |"));
+}
+
+}  // namespace
+}  // namespace layermod
