@@ -27,6 +27,7 @@ struct BenchArgs {
   double km = 0.1;
   int frames = 0;
   float threshold = 80.0f;
+  bool color_only = false;
   std::string out;
 };
 
@@ -70,7 +71,8 @@ BenchResult BenchWithProgress(const Detector& detector, const DetectorOptions& o
                               std::string_view stage) { bar.Update(done, total, stage); },
                        &cancel);
   try {
-    BenchResult result = RunBench(detector, options, args.dataset, selection, metrics, job);
+    const BenchSuite suite = args.color_only ? BenchSuite::kColorOnly : BenchSuite::kDepth;
+    BenchResult result = RunBench(detector, suite, options, args.dataset, selection, metrics, job);
     bar.Finish();
     return result;
   } catch (...) {
@@ -125,6 +127,8 @@ void AddBenchCommand(CLI::App& app) {
   command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
       ->check(CLI::Range(1.0f, 100.0f))
       ->capture_default_str();
+  command->add_flag("--color-only", args->color_only,
+                    "RGB datasets: LINE-2D (color-only mode) vs cv::linemod LINE-2D");
   command->add_option("--out", args->out, "bench.json to write")->required();
   command->callback([args] { RunBenchCommand(*args); });
 }

@@ -18,8 +18,14 @@ std::string Fixed(double value, int decimals) {
 
 double Ratio(double other, double first) { return first > 0.0 ? other / first : 0.0; }
 
-EvalMethod LinemodMethod(const OpenCvLinemod& linemod) {
-  return {"cv::linemod", [&linemod](const BopFrame& frame) {
+EvalMethod DetectorModeMethod(const Detector& detector, DetectorOptions options,
+                              DetectionMode mode) {
+  options.mode = mode;
+  return DetectorMethod(detector, options);
+}
+
+EvalMethod LinemodMethod(const OpenCvLinemod& linemod, std::string name) {
+  return {std::move(name), [&linemod](const BopFrame& frame) {
             return linemod.Detect(frame.color, frame.depth_mm);
           }};
 }
@@ -55,29 +61,40 @@ nlohmann::json RatiosJson(const std::vector<MethodSummary>& methods) {
 
 }  // namespace
 
-BenchResult RunBench(const Detector& detector, const DetectorOptions& detector_options,
+std::string_view SuiteName(BenchSuite suite) {
+  return suite == BenchSuite::kDepth ? "depth" : "color-only";
+}
+
+BenchResult RunBench(const Detector& detector, BenchSuite suite,
+                     const DetectorOptions& detector_options,
                      const std::filesystem::path& dataset_dir,
                      const FrameSelectionOptions& selection, const EvalMetricOptions& metrics,
                      const JobControl& job) {
   detector_options.Validate();
   metrics.Validate();
-  const EvalPlan plan = PlanEvaluation(dataset_dir, DetectorObjectIds(detector), selection, true);
+  const bool with_depth = suite == BenchSuite::kDepth;
+  const EvalPlan plan =
+      PlanEvaluation(dataset_dir, DetectorObjectIds(detector), selection, with_depth);
   BenchResult result;
+  result.suite = suite;
   for (const TemplateArchive& archive : detector.archives()) {
     result.templates += archive.templates().size();
   }
   OpenCvLinemodOptions linemod_options;
   linemod_options.threshold_percent = detector_options.match.threshold_percent;
+  linemod_options.use_depth = with_depth;
   const OpenCvLinemod linemod(detector.archives(), linemod_options, job);
   result.linemod_training = linemod.training();
 
-  DetectorOptions scene_patch = detector_options;
-  scene_patch.mode = DetectionMode::kScenePatch;
-  DetectorOptions exhaustive = detector_options;
-  exhaustive.mode = DetectionMode::kExhaustive;
-  const std::vector<EvalMethod> methods = {DetectorMethod(detector, scene_patch),
-                                           DetectorMethod(detector, exhaustive),
-                                           LinemodMethod(linemod)};
+  std::vector<EvalMethod> methods;
+  if (with_depth) {
+    methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kScenePatch),
+               DetectorModeMethod(detector, detector_options, DetectionMode::kExhaustive),
+               LinemodMethod(linemod, "cv::linemod")};
+  } else {
+    methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kColorOnly),
+               LinemodMethod(linemod, "cv::linemod LINE-2D")};
+  }
   for (const MethodRun& run : RunMethods(plan.dataset, plan.frames, methods, metrics, job)) {
     result.methods.push_back(Summarize(run, plan.dataset.models));
   }
@@ -89,6 +106,7 @@ nlohmann::json BenchReportJson(const EvalRunInfo& info, const BenchResult& resul
   for (const MethodSummary& method : result.methods) methods.push_back(MethodJson(method));
   nlohmann::json setup = RunInfoJson(info);
   setup.erase("mode");
+  setup["suite"] = std::string(SuiteName(result.suite));
   return {{"tool_version", ToolVersion()},
           {"created_utc", UtcTimestamp()},
           {"setup", setup},

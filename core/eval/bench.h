@@ -18,22 +18,33 @@
 
 namespace layermod {
 
-struct BenchResult {
-  std::size_t templates = 0;  // in the archives
-  OpenCvLinemodTraining linemod_training;
-  std::vector<MethodSummary> methods;  // scene-patch, exhaustive, cv::linemod
+// Which methods run side by side.
+enum class BenchSuite {
+  kDepth,      // scene-patch, exhaustive, cv::linemod (colour gradients + depth normals)
+  kColorOnly,  // color-only (LINE-2D), cv::linemod LINE-2D: for RGB datasets
 };
 
-// `detector_options` sets everything but the mode (scene-patch, then exhaustive); cv::linemod
-// uses its match threshold. The dataset must have depth. Throws like PlanEvaluation, Cancelled.
-BenchResult RunBench(const Detector& detector, const DetectorOptions& detector_options,
+struct BenchResult {
+  BenchSuite suite = BenchSuite::kDepth;
+  std::size_t templates = 0;  // in the archives
+  OpenCvLinemodTraining linemod_training;
+  std::vector<MethodSummary> methods;  // in BenchSuite order
+};
+
+// `detector_options` sets everything but the mode; cv::linemod uses its match threshold. With
+// BenchSuite::kDepth the dataset must have depth. Throws like PlanEvaluation, and Cancelled.
+BenchResult RunBench(const Detector& detector, BenchSuite suite,
+                     const DetectorOptions& detector_options,
                      const std::filesystem::path& dataset_dir,
                      const FrameSelectionOptions& selection, const EvalMetricOptions& metrics,
                      const JobControl& job = {});
 
-// {tool_version, created_utc, setup, templates, linemod_training, methods: [...], ratios}. The
-// ratios compare each method with the first: median and p90 time per frame (other / first) and
-// recall (ADD(-S) at km * d) in percentage points (other - first).
+// "depth" or "color-only".
+std::string_view SuiteName(BenchSuite suite);
+
+// {tool_version, created_utc, setup (with the suite), templates, linemod_training, methods: [...],
+// ratios}. The ratios compare each method with the first: median and p90 time per frame (other /
+// first) and recall (ADD(-S) at km * d) in percentage points (other - first).
 nlohmann::json BenchReportJson(const EvalRunInfo& info, const BenchResult& result);
 
 // A Markdown table, one row per method.

@@ -10,6 +10,7 @@
 
 #include "eval_fixtures.h"
 #include "support/test_paths.h"
+#include "util/error.h"
 
 namespace layermod {
 namespace {
@@ -20,7 +21,7 @@ TEST(BenchTest, RunsTheThreeMethodsOnTheSameFrames) {
   test::TempDir dir;
   const test::TinyEvalData data = test::MakeTinyEvalData(dir.path(), kImages);
   const Detector detector({data.archive});
-  const BenchResult result = RunBench(detector, {}, data.dataset, {}, {});
+  const BenchResult result = RunBench(detector, BenchSuite::kDepth, {}, data.dataset, {}, {});
   EXPECT_EQ(result.templates, data.archive.templates().size());
   ASSERT_EQ(result.methods.size(), 3u);
   EXPECT_EQ(result.methods[0].name, "scene-patch");
@@ -48,6 +49,19 @@ TEST(BenchTest, RunsTheThreeMethodsOnTheSameFrames) {
   EXPECT_DOUBLE_EQ(json["ratios"][0]["median_time_ratio"].get<double>(), expected_ratio);
   EXPECT_EQ(json["linemod_training"]["templates"], result.linemod_training.templates);
   EXPECT_THAT(BenchTable(result), ::testing::HasSubstr("| cv::linemod | 3 |"));
+}
+
+TEST(BenchTest, ColourOnlySuiteRunsWithoutDepth) {
+  test::TempDir dir;
+  const test::TinyEvalData data = test::MakeTinyEvalData(dir.path(), kImages);
+  std::filesystem::remove_all(data.dataset / "test" / "000001" / "depth");
+  const Detector detector({data.archive});
+  EXPECT_THROW(RunBench(detector, BenchSuite::kDepth, {}, data.dataset, {}, {}), Error);
+  const BenchResult result = RunBench(detector, BenchSuite::kColorOnly, {}, data.dataset, {}, {});
+  ASSERT_EQ(result.methods.size(), 2u);
+  EXPECT_EQ(result.methods[0].name, "color-only");
+  EXPECT_EQ(result.methods[1].name, "cv::linemod LINE-2D");
+  EXPECT_EQ(result.methods[1].frames, kImages);
 }
 
 }  // namespace

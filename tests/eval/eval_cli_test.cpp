@@ -104,6 +104,7 @@ TEST_F(EvalCliTest, BenchWritesOneEntryPerMethod) {
   EXPECT_EQ(json["methods"][0]["method"], "scene-patch");
   EXPECT_EQ(json["methods"][0]["frames"], 2);
   EXPECT_EQ(json["setup"]["max_frames"], 2);
+  EXPECT_EQ(json["setup"]["suite"], "depth");
 }
 
 TEST_F(EvalCliTest, BenchRefusesADatasetWithoutDepth) {
