@@ -11,6 +11,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
@@ -30,25 +32,27 @@
 namespace layermod::ui {
 namespace {
 
-constexpr int kControlsWidthPx = 330;
+constexpr int kControlsWidthPx = 370;
 
 QString ImageFileFilter() {
   return QObject::tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr);;All files (*)");
 }
 
+// One line of swatches per object, wrapping: "bracket: ■ 0: 633  ■ 1: 700 … mm".
 QString LegendHtml(const ArchiveObject& object) {
   const int layers = static_cast<int>(object.layer_depths_mm.size());
-  QString html = QStringLiteral("<b>%1</b> layers:<br>").arg(QString::fromStdString(object.name).toHtmlEscaped());
+  QString html = QStringLiteral("<b>%1</b> layers (mm):").arg(
+      QString::fromStdString(object.name).toHtmlEscaped());
   for (int i = 0; i < layers; ++i) {
     const cv::Scalar bgr = LayerColor(i, layers);
-    const QColor colour(static_cast<int>(bgr[2]), static_cast<int>(bgr[1]), static_cast<int>(bgr[0]));
-    html += QStringLiteral("<span style=\"background-color:%1\">&nbsp;&nbsp;&nbsp;&nbsp;</span> "
-                           "%2: %3 mm<br>")
+    const QColor colour(static_cast<int>(bgr[2]), static_cast<int>(bgr[1]),
+                        static_cast<int>(bgr[0]));
+    html += QStringLiteral(" <span style=\"color:%1\">&#9632;</span>&nbsp;%2:&nbsp;%3")
                 .arg(colour.name())
                 .arg(i)
                 .arg(object.layer_depths_mm[static_cast<std::size_t>(i)], 0, 'f', 0);
   }
-  return html;
+  return html + QStringLiteral("<br>");
 }
 
 }  // namespace
@@ -70,15 +74,21 @@ DetectionPanel::DetectionPanel(StudioSession* session, JobRunner* runner, QWidge
       table_(new QTableWidget),
       timings_(new QLabel) {
   auto* controls = new QWidget;
-  controls->setFixedWidth(kControlsWidthPx);
   auto* controls_layout = new QVBoxLayout(controls);
   controls_layout->setContentsMargins(0, 0, 0, 0);
   controls_layout->addWidget(BuildCaptureBox());
-  controls_layout->addWidget(BuildDetectBox());
   controls_layout->addWidget(BuildOverlayBox());
+  controls_layout->addWidget(BuildDetectBox());
   controls_layout->addStretch();
+  // Scrolls rather than clipping when the window is short.
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(controls);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setFixedWidth(kControlsWidthPx + scroll->verticalScrollBar()->sizeHint().width());
   auto* layout = new QHBoxLayout(this);
-  layout->addWidget(controls);
+  layout->addWidget(scroll);
   layout->addWidget(BuildResultsArea(), 1);
 
   options_->RestoreSettings();
@@ -173,6 +183,7 @@ QWidget* DetectionPanel::BuildOverlayBox() {
   }
   legend_->setObjectName("layerLegend");
   legend_->setTextFormat(Qt::RichText);
+  legend_->setWordWrap(true);
   layout->addWidget(legend_);
   return box;
 }

@@ -6,7 +6,7 @@
 namespace layermod::ui {
 
 ImageView::ImageView(QWidget* parent) : QWidget(parent) {
-  setMinimumSize(320, 240);
+  setMinimumSize(240, 180);
   setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 }
 
