@@ -33,6 +33,7 @@ struct TrainArgs {
   int color_features = -1;
   int normal_features = -1;
   int threads = 0;
+  std::size_t max_triangles = TrainingRequest{}.max_render_triangles;
 };
 
 // Profile: the file if given, else the defaults; explicit flags win.
@@ -71,6 +72,7 @@ void RunTrain(const TrainArgs& args) {
   request.camera = LoadCameraJson(args.camera);
   request.profile = BuildProfile(args);
   request.threads = args.threads;
+  request.max_render_triangles = args.max_triangles;
   CheckWritableTarget(args.out);  // fail before the work, not after it
 
   LoadModelOptions load_options;
@@ -123,6 +125,9 @@ void AddTrainCommand(CLI::App& app) {
                       "Colour-gradient features per template");
   command->add_option("--normal-features", args->normal_features,
                       "Depth-normal features per template");
+  command->add_option("--max-triangles", args->max_triangles,
+                      "Simplify heavier meshes to this many triangles for rendering (0 = never)")
+      ->capture_default_str();
   command->add_option("--units", args->units, "Units of the mesh file: mm or m")
       ->check(CLI::IsMember({"mm", "m"}))
       ->capture_default_str();

@@ -66,7 +66,7 @@ std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
 
 // Grid cell (gx, gy) of level `top` stands for the level-0 top-left positions
 // [gx * T * 2^top, (gx + 1) * T * 2^top) (spread.h), i.e. for template anchors shifted by the
-// anchor offset. CellNearCandidate: whether those anchors come within the radius of a point.
+// anchor offset.
 struct CandidateGeometry {
   int cell_span_px = 0;  // level-0 pixels per top-level cell
   cv::Point anchor;      // level-0 box top-left -> the template's anchor (see matcher.h)
@@ -82,27 +82,34 @@ CandidateGeometry Geometry(const TemplateRecord& record, int top, const SceneLev
   return {level.spread_px << top, anchor, half_box};
 }
 
-bool CellNearCandidate(const cv::Point& cell, const CandidateGeometry& geometry,
-                       const CandidateArea& area) {
-  const double radius_sq = static_cast<double>(area.radius_px) * area.radius_px;
+// Whether the anchors of cell (gx, gy) come within the radius of `point`.
+bool CellNearPoint(int gx, int gy, const cv::Point& point, const CandidateGeometry& geometry,
+                   int radius_px) {
   const int span = geometry.cell_span_px;
-  return std::any_of(area.points->begin(), area.points->end(), [&](const cv::Point& point) {
-    const cv::Point top_left = point - geometry.anchor;  // puts the anchor on the point
-    const int dx =
-        std::max({cell.x * span - top_left.x, top_left.x - (cell.x * span + span - 1), 0});
-    const int dy =
-        std::max({cell.y * span - top_left.y, top_left.y - (cell.y * span + span - 1), 0});
-    return static_cast<double>(dx) * dx + static_cast<double>(dy) * dy <= radius_sq;
-  });
+  const cv::Point top_left = point - geometry.anchor;  // puts the anchor on the point
+  const int dx = std::max({gx * span - top_left.x, top_left.x - (gx * span + span - 1), 0});
+  const int dy = std::max({gy * span - top_left.y, top_left.y - (gy * span + span - 1), 0});
+  return static_cast<double>(dx) * dx + static_cast<double>(dy) * dy <=
+         static_cast<double>(radius_px) * radius_px;
 }
 
-// The cells within the bounding square of some candidate point (a superset of the cells near
-// one), as merged row spans: scored without a pass over the whole grid and without scoring a
-// cell twice where the squares of neighbouring points overlap (the few hits are then checked
-// exactly).
-std::vector<GridRowSpan> CandidateSpans(const CandidateGeometry& geometry, const cv::Size& cells,
-                                        const CandidateArea& area) {
-  std::vector<std::uint8_t> covered(static_cast<std::size_t>(cells.area()), 0);
+// The top-level cells near some candidate point, as a mask and as merged row spans: scored
+// without a pass over the whole grid, and without scoring a cell twice where the neighbourhoods
+// of neighbouring points overlap.
+struct CandidateCells {
+  cv::Size cells;
+  std::vector<std::uint8_t> near;  // row-major over `cells`
+  std::vector<GridRowSpan> spans;
+
+  bool Contains(const cv::Point& cell) const {
+    return near[static_cast<std::size_t>(cell.y) * cells.width + cell.x] != 0;
+  }
+};
+
+CandidateCells NearCells(const CandidateGeometry& geometry, const cv::Size& cells,
+                         const CandidateArea& area) {
+  CandidateCells result{cells, std::vector<std::uint8_t>(static_cast<std::size_t>(cells.area()), 0),
+                        {}};
   const int span = geometry.cell_span_px;
   for (const cv::Point& point : *area.points) {
     const cv::Point top_left = point - geometry.anchor;
@@ -111,21 +118,22 @@ std::vector<GridRowSpan> CandidateSpans(const CandidateGeometry& geometry, const
     const int gy0 = std::max(FloorDiv(top_left.y - area.radius_px, span), 0);
     const int gy1 = std::min(FloorDiv(top_left.y + area.radius_px, span), cells.height - 1);
     for (int gy = gy0; gy <= gy1; ++gy) {
-      std::uint8_t* row = covered.data() + static_cast<std::size_t>(gy) * cells.width;
-      std::fill(row + gx0, row + std::max(gx0, gx1 + 1), std::uint8_t{1});
+      std::uint8_t* row = result.near.data() + static_cast<std::size_t>(gy) * cells.width;
+      for (int gx = gx0; gx <= gx1; ++gx) {
+        if (row[gx] == 0 && CellNearPoint(gx, gy, point, geometry, area.radius_px)) row[gx] = 1;
+      }
     }
   }
-  std::vector<GridRowSpan> spans;
   for (int gy = 0; gy < cells.height; ++gy) {
-    const std::uint8_t* row = covered.data() + static_cast<std::size_t>(gy) * cells.width;
+    const std::uint8_t* row = result.near.data() + static_cast<std::size_t>(gy) * cells.width;
     for (int gx = 0; gx < cells.width; ++gx) {
       if (row[gx] == 0) continue;
       const int first = gx;
       while (gx + 1 < cells.width && row[gx + 1] != 0) ++gx;
-      spans.push_back({gy, first, gx});
+      result.spans.push_back({gy, first, gx});
     }
   }
-  return spans;
+  return result;
 }
 
 // Grid positions at or above the threshold that `accept` takes, best first, at most `max_hits`.
@@ -217,15 +225,16 @@ std::vector<Candidate> MatchOne(const TemplateRecord& record, const PreparedScen
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
   GridSimilarity grid;
+  CandidateCells near;
   if (area.points == nullptr) {
     grid = ComputeGridSimilarity(record.levels[top], top_level, cv::Mat(), similarity);
   } else {
-    const std::vector<GridRowSpan> spans = CandidateSpans(geometry, cells, area);
-    if (spans.empty()) return {};
-    grid = ComputeGridSimilarityInSpans(record.levels[top], top_level, spans, similarity);
+    near = NearCells(geometry, cells, area);
+    if (near.spans.empty()) return {};
+    grid = ComputeGridSimilarityInSpans(record.levels[top], top_level, near.spans, similarity);
   }
   const auto accept = [&](const cv::Point& cell) {
-    return area.points == nullptr || CellNearCandidate(cell, geometry, area);
+    return area.points == nullptr || near.Contains(cell);
   };
   const int min_level0_sum =
       MinimumSumForPercent(options.threshold_percent, levels[0].usable_features);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "features/extraction.h"
+#include "mesh/decimation.h"
 #include "features/template_edges.h"
 #include "render/rasterizer.h"
 #include "util/error.h"
@@ -77,6 +78,18 @@ TemplateRecord TrainOneTemplate(const TemplateContext& context, std::uint16_t la
   return record;
 }
 
+RenderMesh RenderMeshFor(const Model& model, const TrainingRequest& request) {
+  if (request.max_render_triangles == 0 || model.mesh.n_faces() <= request.max_render_triangles) {
+    return ToRenderMesh(model);
+  }
+  Model simplified = model;
+  simplified.mesh = DecimateMesh(model.mesh, request.max_render_triangles,
+                                 request.max_simplification_error_mm);
+  LogInfo("rendering a simplified mesh: " + std::to_string(simplified.mesh.n_faces()) + " of " +
+          std::to_string(model.mesh.n_faces()) + " triangles");
+  return ToRenderMesh(simplified);
+}
+
 std::string UtcNow() {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
@@ -125,6 +138,9 @@ void TrainingRequest::Validate() const {
   profile.Validate();
   if (threads < 0) throw Error("threads: must be 0 (all) or positive");
   if (obj_id < 0) throw Error("obj-id: must be non-negative");
+  if (!(max_simplification_error_mm > 0.0)) {
+    throw Error("simplification error: must be positive (mm)");
+  }
 }
 
 std::size_t TrainingPlan::EstimatedBytes(const FeatureOptions& features) const {
@@ -157,7 +173,7 @@ TrainingResult TrainTemplates(const Model& model, const TrainingRequest& request
                 std::to_string(plan.EstimatedBytes(request.profile.features) >> 20) +
                 " MiB; reduce the depth range or the view sampling");
   }
-  const RenderMesh mesh = ToRenderMesh(model);
+  const RenderMesh mesh = RenderMeshFor(model, request);
   const Eigen::Vector3d bbox_size = model.bbox_max - model.bbox_min;
   const TemplateContext context{mesh, model, request,
                                 request.profile.features.depth_edge_fraction *

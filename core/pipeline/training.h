@@ -20,6 +20,10 @@ struct TrainingRequest {
   PinholeCamera camera;
   TrainingProfile profile;
   int threads = 0;  // 0: all hardware threads
+  // Meshes with more triangles are simplified (surface moved by at most the error) before
+  // rendering; the archive keeps the simplified mesh for pose refinement. 0: never simplify.
+  std::size_t max_render_triangles = 12000;
+  double max_simplification_error_mm = 0.5;
 
   void Validate() const;  // throws Error naming the bad field
 };

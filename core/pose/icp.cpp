@@ -81,10 +81,39 @@ StepResult SolveStep(const std::vector<SurfaceSample>& samples, const Pose& pose
     ++result.inliers;
   }
   if (result.inliers >= 6) {
+    // Marquardt damping (scaled per parameter: rotations and translations differ in scale)
+    // keeps directions the data barely constrains (sliding on a plane) from huge steps.
+    normal_matrix.diagonal() *= 1.0 + 1e-2;
     result.update = normal_matrix.ldlt().solve(rhs);
     if (!result.update.allFinite()) result.update.setZero();
   }
   return result;
+}
+
+// Scales an update down so it rotates by at most max_step_deg and translates by at most
+// max_step_mm.
+Eigen::Matrix<double, 6, 1> ClampStep(const Eigen::Matrix<double, 6, 1>& update,
+                                      const IcpOptions& options) {
+  const double rotation_deg = RadToDeg(update.head<3>().norm());
+  const double translation_mm = update.tail<3>().norm();
+  const double factor = std::min({1.0, options.max_step_deg / std::max(rotation_deg, 1e-12),
+                                  options.max_step_mm / std::max(translation_mm, 1e-12)});
+  return update * factor;
+}
+
+Eigen::Vector3d MeanPosition(const RenderMesh& mesh) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3f& position : mesh.positions) sum += position.cast<double>();
+  return mesh.positions.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(mesh.positions.size()));
+}
+
+// Whether `pose` wandered too far from `start` (translation of the model centre, rotation).
+bool Drifted(const Pose& start, const Pose& pose, const Eigen::Vector3d& centre,
+             const IcpOptions& options) {
+  const double moved_mm = ((pose * centre) - (start * centre)).norm();
+  const double turned_deg =
+      RadToDeg(Eigen::AngleAxisd(pose.R * start.R.transpose()).angle());
+  return moved_mm > options.max_drift_mm || turned_deg > options.max_drift_deg;
 }
 
 Pose ApplyUpdate(const Pose& pose, const Eigen::Matrix<double, 6, 1>& update) {
@@ -101,6 +130,10 @@ void IcpOptions::Validate() const {
   if (max_iterations < 1 || renders < 1) throw Error("icp: iterations and renders must be >= 1");
   if (!(final_max_distance_mm > 0.0) || !(initial_max_distance_mm >= final_max_distance_mm)) {
     throw Error("icp: need 0 < final gate <= initial gate");
+  }
+  if (!(max_step_mm > 0.0) || !(max_step_deg > 0.0) || !(max_drift_mm > 0.0) ||
+      !(max_drift_deg > 0.0)) {
+    throw Error("icp: step and drift limits must be positive");
   }
   if (!(huber_mm > 0.0) || sample_step_px < 1 || !(convergence_mm >= 0.0)) {
     throw Error("icp: huber scale and sampling step must be positive");
@@ -129,12 +162,16 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
                                       options.huber_mm);
     result.iterations = iteration + 1;
     if (step.inliers < 6) break;
-    result.cam_from_model = ApplyUpdate(result.cam_from_model, step.update);
+    result.cam_from_model = ApplyUpdate(result.cam_from_model, ClampStep(step.update, options));
     const double motion_mm = step.update.tail<3>().norm() + step.update.head<3>().norm() * 100.0;
     if (motion_mm < options.convergence_mm && gate <= options.final_max_distance_mm) {
       result.converged = true;
       break;
     }
+  }
+  if (Drifted(initial, result.cam_from_model, MeanPosition(mesh), options)) {
+    result.cam_from_model = initial;
+    result.converged = false;
   }
   const StepResult final_step = SolveStep(samples, result.cam_from_model, camera, depth_mm,
                                           options.final_max_distance_mm, options.huber_mm);

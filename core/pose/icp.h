@@ -19,6 +19,13 @@ struct IcpOptions {
   double huber_mm = 3.0;                  // robust loss scale
   int sample_step_px = 3;                 // visible-surface sampling step
   double convergence_mm = 0.05;           // stop when an update moves points less than this
+  // A part lying flat on a table leaves point-to-plane ICP free to slide along the plane. Each
+  // step is damped and clamped, and a refinement that wanders farther than this from its start
+  // is abandoned (the initial pose is returned, not converged).
+  double max_step_mm = 10.0;
+  double max_step_deg = 5.0;
+  double max_drift_mm = 60.0;
+  double max_drift_deg = 30.0;
 
   void Validate() const;  // throws Error
 };
