@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Regenerates the studio's screenshots in docs/screenshots/ from the bundled sample part: the
 # model with its sphere and view coverage, the template browser, and the detection preview on a
-# synthetic capture with each overlay. Needs a GUI build and xvfb-run.
+# synthetic capture with each overlay, and a detection against the capture's points in 3D.
+# Needs a GUI build and xvfb-run.
 #   packaging/screenshots.sh [BUILD_DIR]      (default: build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,5 +43,6 @@ shoot detection-poses "$work/set/bracket.layermod" "${capture[@]}" --overlays po
 shoot detection-regions "$work/set/bracket.layermod" "${capture[@]}" --overlays regions
 shoot detection-coarse "$work/set/bracket.layermod" "${capture[@]}" --overlays coarse
 shoot detection-matches "$work/set/bracket.layermod" "${capture[@]}" --overlays matches
+shoot detection-3d "$work/set/bracket.layermod" "${capture[@]}" --show-detection 0
 shoot detection-all "$work/set/bracket.layermod" "${capture[@]}" \
   --overlays regions,coarse,matches,poses

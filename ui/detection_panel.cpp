@@ -194,6 +194,10 @@ QWidget* DetectionPanel::BuildResultsArea() {
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->verticalHeader()->setVisible(false);
+  table_->setToolTip(tr("Double-click a detection to see it in the 3D view against the capture's "
+                        "points"));
+  connect(table_, &QTableWidget::cellDoubleClicked, this,
+          [this](int row) { emit DetectionActivated(row); });
   FillDetectionTable(table_, {});
   timings_->setObjectName("timingsLabel");
   timings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -228,6 +232,10 @@ void DetectionPanel::OpenCaptureFilesDialog() {
   const QString camera = AskOpenPath(this, "camera", tr("Camera (BOP camera.json)"), JsonFileFilter());
   if (camera.isEmpty()) return;
   OpenCapture({{}, 0, 0, color, depth, camera});
+}
+
+void DetectionPanel::OpenBopFolder(const QString& split_dir) {
+  OpenCapture({split_dir, scene_->value(), frame_->value(), {}, {}, {}});
 }
 
 void DetectionPanel::OpenCapture(const CaptureSource& source) {

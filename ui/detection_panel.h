@@ -39,12 +39,16 @@ class DetectionPanel : public QWidget {
   void OpenCapture(const CaptureSource& source);
   // Runs detection now (or once the running job ends); false without a capture or templates.
   bool Detect();
+  // A BOP split folder (e.g. dropped on the window): the scene and frame in the form.
+  void OpenBopFolder(const QString& split_dir);
   void SetOverlays(const OverlayToggles& toggles);
   OverlayToggles overlays() const;
 
   bool has_capture() const { return capture_ != nullptr; }
   bool has_result() const { return result_ != nullptr; }
   const DetectionResult* result() const { return result_.get(); }
+  const Capture* capture() const { return capture_.get(); }
+  const Detector* result_detector() const { return result_detector_.get(); }
   bool has_pending_work() const { return !pending_.empty(); }
   ImageView* image_view() const { return image_; }
   QTableWidget* table() const { return table_; }
@@ -58,6 +62,8 @@ class DetectionPanel : public QWidget {
   void CaptureOpened();
   void DetectionFinished();
   void OpenArchiveRequested();
+  // A detection row was double-clicked: show it in the 3D view.
+  void DetectionActivated(int index);
 
  private:
   QWidget* BuildCaptureBox();

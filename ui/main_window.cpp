@@ -2,6 +2,7 @@
 #include "ui/main_window.h"
 
 #include <QCloseEvent>
+#include <QFileInfo>
 #include <QDockWidget>
 #include <QMenu>
 #include <QMimeData>
@@ -112,11 +113,14 @@ void MainWindow::Wire() {
           &StudioFiles::ExportArchiveDialog);
   connect(detection_panel_, &DetectionPanel::OpenArchiveRequested, files_,
           &StudioFiles::OpenArchiveDialog);
+  connect(detection_panel_, &DetectionPanel::DetectionActivated, this,
+          &MainWindow::ShowDetectionInScene);
   connect(detection_panel_, &DetectionPanel::CaptureOpened, this,
           [this] { tabs_->setCurrentWidget(detection_panel_); });
   ShowJobFeedback(this, runner_);
   connect(session_, &StudioSession::ArchiveChanged, this, [this] {
     scene_->ClearHighlight();
+    scene_->ClearDetection();
     scene_->Render();
   });
 }
@@ -129,7 +133,30 @@ void MainWindow::ShowSelectedCamera(int template_index) {
                              archive->Object(record.obj_id).layer_depths_mm);
 }
 
-void MainWindow::OpenFiles(const QStringList& paths) { files_->OpenFiles(paths); }
+void MainWindow::ShowDetectionInScene(int detection_index) {
+  const DetectionResult* result = detection_panel_->result();
+  if (result == nullptr || detection_index < 0 ||
+      detection_index >= static_cast<int>(result->detections.size())) {
+    return;
+  }
+  const Detection& detection = result->detections[static_cast<std::size_t>(detection_index)];
+  scene_->ShowDetection(*detection_panel_->capture(),
+                        detection_panel_->result_detector()->Object(detection.obj_id), detection);
+  tabs_->setCurrentWidget(scene_);
+}
+
+void MainWindow::OpenFiles(const QStringList& paths) {
+  // Folders are BOP captures for the detection preview; files are meshes and archives.
+  QStringList files;
+  for (const QString& path : paths) {
+    if (QFileInfo(path).isDir()) {
+      detection_panel_->OpenBopFolder(path);
+    } else {
+      files << path;
+    }
+  }
+  files_->OpenFiles(files);
+}
 
 bool MainWindow::IsIdle() const {
   return !runner_->busy() && !files_->has_queued_files() &&

@@ -38,8 +38,11 @@ class MainWindow : public QMainWindow {
   LogDock* log_dock() const { return log_dock_; }
   StudioFiles* files() const { return files_; }
 
-  // Meshes and *.layermod archives, opened in order (command line, drops).
+  // Meshes and *.layermod archives, opened in order, and BOP split folders as detection
+  // captures (command line, drops).
   void OpenFiles(const QStringList& paths);
+  // The preview's detection `detection_index` in the 3D view, against the capture's points.
+  void ShowDetectionInScene(int detection_index);
   // No job runs or waits, no file waits, no thumbnail is being rendered.
   bool IsIdle() const;
 

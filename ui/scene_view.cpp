@@ -14,6 +14,7 @@
 
 #include <cmath>
 
+#include "ui/detection_actors.h"
 #include "ui/scene_actors.h"
 
 namespace layermod::ui {
@@ -22,6 +23,8 @@ namespace {
 // Direction the default view looks from (object +Z up), as a CAD viewer's isometric view.
 constexpr ViewAngles kHomeView{-60.0, 25.0, 0.0};
 constexpr double kHomeViewAngleDeg = 30.0;
+// The capture's points shown around a detection: within this many sphere radii of its centre.
+constexpr double kDetectionCloudRadii = 2.5;
 
 }  // namespace
 
@@ -57,6 +60,7 @@ void SceneView::RemoveModelActors() {
 void SceneView::SetModel(std::shared_ptr<const Model> model) {
   RemoveModelActors();
   ClearHighlight();
+  ClearDetection();
   model_ = std::move(model);
   if (model_ != nullptr) {
     sphere_ = MakeSphereActor(model_->sphere);
@@ -80,8 +84,7 @@ void SceneView::SetCoverage(const std::vector<double>& layer_depths_mm,
   }
   if (coverage_ != nullptr) {
     scalar_bar_ = MakeDepthScalarBar(coverage_);
-    coverage_->SetVisibility(coverage_visible_);
-    scalar_bar_->SetVisibility(coverage_visible_);
+    ShowCoverageActors(coverage_visible_ && !has_detection());
     renderer_->AddViewProp(coverage_);
     renderer_->AddViewProp(scalar_bar_);
   }
@@ -97,10 +100,15 @@ void SceneView::ShowTemplateCamera(const TemplateRecord& record, const PinholeCa
       sphere, GlyphPosition(sphere, record.view, record.layer_depth_mm, layer_depths_mm.front()));
   renderer_->AddViewProp(highlight_);
 
-  // The VTK camera takes the template's pose and vertical field of view, so the model appears
-  // as in the template's render. The clipping range keeps only the model's depth, which hides
-  // the glyphs between that camera and the model until the user moves the view.
-  const Pose& pose = record.cam_from_model;
+  // The template's pose and field of view show the model as in the template's render. Only the
+  // model's depth is kept, which hides the glyphs between that camera and the model until the
+  // user moves the view.
+  LookThrough(record.cam_from_model, camera, sphere, 1.5 * sphere.radius);
+  Render();
+}
+
+void SceneView::LookThrough(const Pose& pose, const PinholeCamera& camera, const Sphere& sphere,
+                            double depth_margin_mm) {
   const Eigen::Vector3d position = -(pose.R.transpose() * pose.t);
   const Eigen::Vector3d forward = pose.R.transpose() * Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d up = -(pose.R.transpose() * Eigen::Vector3d::UnitY());
@@ -113,9 +121,47 @@ void SceneView::ShowTemplateCamera(const TemplateRecord& record, const PinholeCa
   if (camera.fy > 0.0 && camera.height > 0) {
     vtk_camera->SetViewAngle(RadToDeg(2.0 * std::atan(0.5 * camera.height / camera.fy)));
   }
-  vtk_camera->SetClippingRange(std::max(distance_mm - 1.5 * sphere.radius, 1.0),
-                               distance_mm + 1.5 * sphere.radius);
+  vtk_camera->SetClippingRange(std::max(distance_mm - depth_margin_mm, 1.0),
+                               distance_mm + depth_margin_mm);
+}
+
+void SceneView::ShowDetection(const Capture& capture, const ArchiveObject& object,
+                              const Detection& detection) {
+  ClearDetection();
+  const double keep_radius_mm = kDetectionCloudRadii * object.sphere.radius;
+  auto cloud = MakeCaptureCloudActor(capture, detection.cam_from_model, object.sphere,
+                                     keep_radius_mm, &detection_cloud_points_);
+  if (cloud != nullptr) detection_props_.push_back(cloud);
+  detection_props_.push_back(MakeDetectedModelActor(object.mesh));
+  for (const auto& prop : detection_props_) renderer_->AddViewProp(prop);
+  // The glyphs would hide the points; the View menu can bring them back.
+  ShowCoverageActors(false);
+  LookAtFrom(detection.cam_from_model, object.sphere, keep_radius_mm);
   Render();
+}
+
+void SceneView::LookAtFrom(const Pose& cam_from_model, const Sphere& sphere, double fit_radius_mm) {
+  const Eigen::Vector3d position = -(cam_from_model.R.transpose() * cam_from_model.t);
+  const Eigen::Vector3d up = -(cam_from_model.R.transpose() * Eigen::Vector3d::UnitY());
+  const double distance_mm = (sphere.centre - position).norm();
+  vtkCamera* camera = renderer_->GetActiveCamera();
+  camera->SetPosition(position.data());
+  camera->SetFocalPoint(sphere.centre.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(RadToDeg(2.0 * std::atan(fit_radius_mm / std::max(distance_mm, 1.0))));
+  renderer_->ResetCameraClippingRange();
+}
+
+void SceneView::ShowCoverageActors(bool visible) {
+  if (coverage_ != nullptr) coverage_->SetVisibility(visible);
+  if (scalar_bar_ != nullptr) scalar_bar_->SetVisibility(visible);
+}
+
+void SceneView::ClearDetection() {
+  for (const auto& prop : detection_props_) renderer_->RemoveViewProp(prop);
+  detection_props_.clear();
+  detection_cloud_points_ = 0;
+  ShowCoverageActors(coverage_visible_);
 }
 
 void SceneView::ClearHighlight() {
@@ -151,8 +197,7 @@ void SceneView::ResetCamera() {
 
 void SceneView::SetCoverageVisible(bool visible) {
   coverage_visible_ = visible;
-  if (coverage_ != nullptr) coverage_->SetVisibility(visible);
-  if (scalar_bar_ != nullptr) scalar_bar_->SetVisibility(visible);
+  ShowCoverageActors(visible);
   Render();
 }
 

@@ -10,6 +10,7 @@
 #include "geometry/camera.h"
 #include "geometry/views.h"
 #include "mesh/model.h"
+#include "pipeline/detector.h"
 #include "templates/template_record.h"
 
 class vtkActor;
@@ -38,9 +39,16 @@ class SceneView : public QVTKOpenGLNativeWidget {
   void ShowTemplateCamera(const TemplateRecord& record, const PinholeCamera& camera,
                           const std::vector<double>& layer_depths_mm);
   void ClearHighlight();
+  // The capture's point cloud around `detection` and the detected mesh, in the object's model
+  // frame, seen from the capture camera's position; the coverage glyphs are hidden meanwhile.
+  void ShowDetection(const Capture& capture, const ArchiveObject& object,
+                     const Detection& detection);
+  void ClearDetection();
 
   int coverage_glyph_count() const { return coverage_glyphs_; }
   bool has_highlight() const { return highlight_ != nullptr; }
+  bool has_detection() const { return !detection_props_.empty(); }
+  int detection_cloud_points() const { return detection_cloud_points_; }
 
  public slots:
   void ResetCamera();
@@ -50,6 +58,13 @@ class SceneView : public QVTKOpenGLNativeWidget {
 
  private:
   void RemoveModelActors();
+  // Puts the VTK camera at `cam_from_model`'s pose with `camera`'s vertical field of view; the
+  // clipping range keeps `depth_margin_mm` around the sphere centre.
+  void LookThrough(const Pose& cam_from_model, const PinholeCamera& camera, const Sphere& sphere,
+                   double depth_margin_mm);
+  // Looks at the sphere centre from `cam_from_model`'s camera position, framing `fit_radius_mm`.
+  void LookAtFrom(const Pose& cam_from_model, const Sphere& sphere, double fit_radius_mm);
+  void ShowCoverageActors(bool visible);
 
   vtkSmartPointer<vtkRenderer> renderer_;
   vtkSmartPointer<vtkOrientationMarkerWidget> orientation_;
@@ -59,6 +74,8 @@ class SceneView : public QVTKOpenGLNativeWidget {
   vtkSmartPointer<vtkActor> coverage_;
   vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
   vtkSmartPointer<vtkActor> highlight_;
+  std::vector<vtkSmartPointer<vtkProp>> detection_props_;
+  int detection_cloud_points_ = 0;
   int coverage_glyphs_ = 0;
   bool coverage_visible_ = true;
   bool sphere_visible_ = true;

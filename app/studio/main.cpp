@@ -22,11 +22,13 @@ struct CaptureOptions {
   QCommandLineOption color{"color", "Detection preview: colour image of the capture.", "png"};
   QCommandLineOption depth{"depth", "16-bit depth PNG in mm (with --color).", "png"};
   QCommandLineOption camera{"camera", "BOP camera.json (with --color).", "json"};
+  QCommandLineOption show_detection{
+      "show-detection", "Once detected, show detection INDEX (0: best) in the 3D view.", "index"};
   QCommandLineOption overlays{
       "overlays", "Overlays shown: any of regions,coarse,matches,poses (default: poses).", "list"};
 
   void AddTo(QCommandLineParser& parser) const {
-    parser.addOptions({bop, scene, frame, color, depth, camera, overlays});
+    parser.addOptions({bop, scene, frame, color, depth, camera, overlays, show_detection});
   }
 };
 
@@ -70,7 +72,9 @@ int main(int argc, char** argv) {
   parser.addOption(screenshot);
   const CaptureOptions capture_options;
   capture_options.AddTo(parser);
-  parser.addPositionalArgument("files", "Meshes and *.layermod archives to open.", "[files...]");
+  parser.addPositionalArgument(
+      "files", "Meshes and *.layermod archives to open; a BOP split folder opens a capture.",
+      "[files...]");
   parser.process(app);
 
   const bool batch = parser.isSet(screenshot);
@@ -83,6 +87,11 @@ int main(int argc, char** argv) {
         OverlaysFromArgument(parser.value(capture_options.overlays)));
   }
   layermod::ui::CaptureSource capture;
+  if (parser.isSet(capture_options.show_detection)) {
+    const int index = parser.value(capture_options.show_detection).toInt();
+    QObject::connect(window.detection_panel(), &layermod::ui::DetectionPanel::DetectionFinished,
+                     &window, [&window, index] { window.ShowDetectionInScene(index); });
+  }
   if (CaptureFromArguments(parser, capture_options, &capture)) {
     window.detection_panel()->OpenCapture(capture);
   }

@@ -12,6 +12,7 @@
 #include "ui/image_view.h"
 #include "ui/job_runner.h"
 #include "ui/main_window.h"
+#include "ui/scene_view.h"
 #include "ui/studio_session.h"
 #include "ui_test_support.h"
 
@@ -75,6 +76,28 @@ class DetectionPanelTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
     QVERIFY(panel->table()->rowCount() >= 1);
     QVERIFY(window_->findChild<QLabel*>("captureLabel")->text().contains("with depth"));
+  }
+
+  void DoubleClickedDetectionShowsInThe3dView() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy finished(panel, &DetectionPanel::DetectionFinished);
+    panel->OpenCapture({files.bop_dir, 1, 0, {}, {}, {}});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QVERIFY(!window_->scene()->has_detection());
+    emit panel->table()->cellDoubleClicked(0, 0);
+    QVERIFY(window_->scene()->has_detection());
+    QVERIFY(window_->scene()->detection_cloud_points() > 100);
+    QCOMPARE(window_->tabs()->currentWidget(), window_->scene());
+  }
+
+  void DroppedBopFolderOpensItsFrame() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    QSignalSpy finished(window_->detection_panel(), &DetectionPanel::DetectionFinished);
+    window_->OpenFiles({files.bop_dir});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QVERIFY(window_->detection_panel()->has_capture());
+    QVERIFY(window_->detection_panel()->table()->rowCount() >= 1);
   }
 
   void MissingFrameShowsAnErrorNamingTheFolder() {
