@@ -26,7 +26,7 @@ struct BenchArgs {
   double min_visib = 0.5;
   double km = 0.1;
   int frames = 0;
-  float threshold = 80.0f;
+  float threshold = MatchOptions{}.threshold_percent;
   bool color_only = false;
   std::string out;
 };
