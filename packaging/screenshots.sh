@@ -39,6 +39,7 @@ shoot() {  # shoot NAME ARGS...
 capture=(--bop "$work/synth/test" --scene 1 --frame 0)
 shoot model resources/sample/bracket.ply
 shoot templates "$work/set/bracket.layermod"
+shoot template-selected "$work/set/bracket.layermod" --select-template 40
 shoot detection-poses "$work/set/bracket.layermod" "${capture[@]}" --overlays poses
 shoot detection-regions "$work/set/bracket.layermod" "${capture[@]}" --overlays regions
 shoot detection-coarse "$work/set/bracket.layermod" "${capture[@]}" --overlays coarse

@@ -69,7 +69,7 @@ MainWindow::MainWindow(QWidget* parent)
   resize(1600, 1000);
   // The 3D view gets most of the window until the user arranges the docks (restored below).
   resizeDocks({model_dock, views_dock}, {360, 400}, Qt::Horizontal);
-  resizeDocks({browser_dock}, {270}, Qt::Vertical);
+  resizeDocks({browser_dock}, {330}, Qt::Vertical);
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());

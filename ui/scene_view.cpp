@@ -79,8 +79,15 @@ void SceneView::SetCoverage(const std::vector<double>& layer_depths_mm,
   coverage_ = nullptr;
   scalar_bar_ = nullptr;
   coverage_glyphs_ = 0;
+  coverage_radius_mm_ = 0.0;
   if (model_ != nullptr) {
     coverage_ = MakeCoverageActor(model_->sphere, layer_depths_mm, views, &coverage_glyphs_);
+  }
+  if (coverage_ != nullptr) {
+    coverage_radius_mm_ = (GlyphPosition(model_->sphere, {}, layer_depths_mm.back(),
+                                         layer_depths_mm.front()) -
+                           model_->sphere.centre)
+                              .norm();
   }
   if (coverage_ != nullptr) {
     scalar_bar_ = MakeDepthScalarBar(coverage_);
@@ -182,10 +189,10 @@ void SceneView::ResetCamera() {
     camera->SetPosition(direction.data());
     renderer_->ResetCamera();
   } else {
-    // Centred on the sphere; with coverage, the near layers fill the view and the far ones run
-    // off its edges (zoom out to see them), otherwise the model does.
+    // Centred on the sphere, framing the whole coverage (every glyph shell) or else the model.
     const Sphere& sphere = model_->sphere;
-    const double fit_radius_mm = sphere.radius * (coverage_ != nullptr ? 4.5 : 1.3);
+    const double fit_radius_mm =
+        std::max(sphere.radius * 1.3, coverage_ != nullptr ? coverage_radius_mm_ * 1.05 : 0.0);
     const double distance_mm = fit_radius_mm / std::sin(DegToRad(kHomeViewAngleDeg / 2.0));
     const Eigen::Vector3d position = sphere.centre + distance_mm * direction;
     camera->SetFocalPoint(sphere.centre.data());

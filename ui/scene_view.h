@@ -77,6 +77,7 @@ class SceneView : public QVTKOpenGLNativeWidget {
   std::vector<vtkSmartPointer<vtkProp>> detection_props_;
   int detection_cloud_points_ = 0;
   int coverage_glyphs_ = 0;
+  double coverage_radius_mm_ = 0.0;  // outermost glyph shell around the sphere centre
   bool coverage_visible_ = true;
   bool sphere_visible_ = true;
 };

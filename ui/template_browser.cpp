@@ -20,7 +20,8 @@
 namespace layermod::ui {
 namespace {
 
-constexpr int kDetailPx = 320;
+constexpr int kDetailPx = 240;
+constexpr int kDetailTextWidthPx = 220;
 
 QDoubleSpinBox* AngleBox(double min_deg, double max_deg, double value_deg, const char* name) {
   auto* box = new QDoubleSpinBox;
@@ -73,15 +74,17 @@ TemplateBrowser::TemplateBrowser(StudioSession* session, QWidget* parent)
   detail_text_->setWordWrap(true);
   detail_text_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   detail_text_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  auto* detail = new QHBoxLayout;
-  detail->addWidget(detail_image_);
-  detail->addWidget(detail_text_, 1);
+  detail_text_->setFixedWidth(kDetailTextWidthPx);
+  // The dock is wide and short: the enlarged template sits beside the thumbnails.
+  auto* list_and_detail = new QHBoxLayout;
+  list_and_detail->addWidget(list_, 1);
+  list_and_detail->addWidget(detail_image_, 0, Qt::AlignTop);
+  list_and_detail->addWidget(detail_text_);
 
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(BuildFilterRow());
   layout->addWidget(mesh_banner_);
-  layout->addWidget(list_, 1);
-  layout->addLayout(detail);
+  layout->addLayout(list_and_detail, 1);
 
   connect(open_mesh, &QPushButton::clicked, this, &TemplateBrowser::OpenMeshRequested);
   connect(list_, &QListView::clicked, this,

@@ -96,7 +96,8 @@ QWidget* ViewsPanel::BuildDepthBox() {
   depth_max_ = NumberBox(1.0, 1e6, " mm");
   depth_min_->setObjectName("depthMinBox");
   depth_max_->setObjectName("depthMaxBox");
-  auto* box = new QGroupBox(tr("Depth range (layers spaced by the sphere radius)"));
+  auto* box = new QGroupBox(tr("Depth range"));
+  box->setToolTip(tr("Depth layers are spaced by the sphere radius r"));
   auto* form = new QFormLayout(box);
   form->addRow(tr("D_min"), depth_min_);
   form->addRow(tr("D_max"), depth_max_);

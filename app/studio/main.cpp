@@ -9,6 +9,8 @@
 #include "ui/capture_source.h"
 #include "ui/detection_panel.h"
 #include "ui/main_window.h"
+#include "ui/studio_session.h"
+#include "ui/template_browser.h"
 #include "ui/screenshot.h"
 #include "ui/studio_dialogs.h"
 #include "util/version.h"
@@ -24,11 +26,14 @@ struct CaptureOptions {
   QCommandLineOption camera{"camera", "BOP camera.json (with --color).", "json"};
   QCommandLineOption show_detection{
       "show-detection", "Once detected, show detection INDEX (0: best) in the 3D view.", "index"};
+  QCommandLineOption select_template{
+      "select-template", "Once an archive is open, select row ROW of the template browser.", "row"};
   QCommandLineOption overlays{
       "overlays", "Overlays shown: any of regions,coarse,matches,poses (default: poses).", "list"};
 
   void AddTo(QCommandLineParser& parser) const {
-    parser.addOptions({bop, scene, frame, color, depth, camera, overlays, show_detection});
+    parser.addOptions({bop, scene, frame, color, depth, camera, overlays, show_detection,
+                       select_template});
   }
 };
 
@@ -87,6 +92,13 @@ int main(int argc, char** argv) {
         OverlaysFromArgument(parser.value(capture_options.overlays)));
   }
   layermod::ui::CaptureSource capture;
+  if (parser.isSet(capture_options.select_template)) {
+    const int row = parser.value(capture_options.select_template).toInt();
+    QObject::connect(window.session(), &layermod::ui::StudioSession::ArchiveChanged, &window,
+                     [&window, row] {
+                       if (window.session()->archive() != nullptr) window.browser()->SelectRow(row);
+                     });
+  }
   if (parser.isSet(capture_options.show_detection)) {
     const int index = parser.value(capture_options.show_detection).toInt();
     QObject::connect(window.detection_panel(), &layermod::ui::DetectionPanel::DetectionFinished,
