@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/evaluation_args.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
 #include "eval/bench.h"
@@ -18,14 +19,7 @@
 namespace layermod::cli {
 namespace {
 
-struct BenchArgs {
-  std::vector<std::string> archives;
-  std::string dataset;
-  int scene_id = -1;
-  std::string targets;
-  double min_visib = 0.5;
-  double km = 0.1;
-  int frames = 0;
+struct BenchArgs : EvaluationArgs {
   float threshold = MatchOptions{}.threshold_percent;
   bool color_only = false;
   std::string out;
@@ -36,29 +30,6 @@ void RequireReleaseBuild() {
 #ifndef NDEBUG
   throw Error("bench measures speed: build layermod with CMAKE_BUILD_TYPE=Release");
 #endif
-}
-
-FrameSelectionOptions BuildSelection(const BenchArgs& args) {
-  FrameSelectionOptions selection;
-  if (args.scene_id >= 0) selection.scene_id = args.scene_id;
-  if (!args.targets.empty()) selection.targets = LoadBopTargets(args.targets);
-  selection.min_visib_fract = args.min_visib;
-  selection.max_frames = args.frames;
-  selection.Validate();
-  return selection;
-}
-
-EvalRunInfo BuildRunInfo(const BenchArgs& args, const FrameSelectionOptions& selection,
-                         const EvalMetricOptions& metrics) {
-  EvalRunInfo info;
-  info.dataset_dir = args.dataset;
-  info.archives = args.archives;
-  info.targets_file = args.targets;
-  info.scene_id = selection.scene_id;
-  info.min_visib_fract = selection.min_visib_fract;
-  info.max_frames = selection.max_frames;
-  info.metrics = metrics;
-  return info;
 }
 
 BenchResult BenchWithProgress(const Detector& detector, const DetectorOptions& options,
@@ -86,14 +57,10 @@ void RunBenchCommand(const BenchArgs& args) {
   DetectorOptions options;
   options.match.threshold_percent = args.threshold;
   options.Validate();
-  EvalMetricOptions metrics;
-  metrics.km = args.km;
-  metrics.Validate();
+  const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);
   CheckWritableTarget(args.out);
-  std::vector<TemplateArchive> archives;
-  for (const std::string& path : args.archives) archives.push_back(ReadArchive(path));
-  const Detector detector(std::move(archives));
+  const Detector detector = LoadDetector(args);
   const BenchResult result = BenchWithProgress(detector, options, args, selection, metrics);
   WriteFileAtomically(
       args.out, BenchReportJson(BuildRunInfo(args, selection, metrics), result).dump(2) + "\n");
@@ -110,20 +77,7 @@ void AddBenchCommand(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* command = app.add_subcommand(
       "bench", "Time Scene-Patch, exhaustive matching and cv::linemod on the same frames");
-  command->add_option("--archive", args->archives, "Template archive(s) (*.layermod)")->required();
-  command->add_option("--dataset", args->dataset, "BOP dataset root or split folder (with depth)")
-      ->required();
-  command->add_option("--scene", args->scene_id, "Only this scene id");
-  command->add_option("--targets", args->targets, "BOP targets file: only the listed objects");
-  command->add_option("--min-visib", args->min_visib, "Skip instances less visible than this")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  command->add_option("--km", args->km, "Recall counts ADD(-S) <= km x diameter")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  command->add_option("--frames", args->frames, "At most this many frames (0 = all)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  AddEvaluationOptions(command, *args);
   command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
       ->check(CLI::Range(1.0f, 100.0f))
       ->capture_default_str();
