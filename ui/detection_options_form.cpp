@@ -26,10 +26,12 @@ DetectionOptionsForm::DetectionOptionsForm(QWidget* parent)
   instances_->setObjectName("detectionInstances");
   blocks_->setObjectName("detectionBlocks");
   for (DetectionMode mode : kModes) {
-    mode_->addItem(QString::fromUtf8(ModeName(mode).data(), static_cast<int>(ModeName(mode).size())));
+    mode_->addItem(
+        QString::fromUtf8(ModeName(mode).data(), static_cast<int>(ModeName(mode).size())));
   }
-  mode_->setToolTip(tr("scene-patch: regions, coarse positioning, then the block's layer; "
-                       "exhaustive: every template everywhere; color-only: no depth"));
+  mode_->setToolTip(
+      tr("scene-patch: regions, coarse positioning, then the block's layer; "
+         "exhaustive: every template everywhere; color-only: no depth"));
   threshold_->setRange(1.0, 100.0);
   threshold_->setDecimals(1);
   threshold_->setSuffix(QStringLiteral(" %"));

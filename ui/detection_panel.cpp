@@ -41,8 +41,8 @@ QString ImageFileFilter() {
 // One line of swatches per object, wrapping: "bracket: ■ 0: 633  ■ 1: 700 … mm".
 QString LegendHtml(const ArchiveObject& object) {
   const int layers = static_cast<int>(object.layer_depths_mm.size());
-  QString html = QStringLiteral("<b>%1</b> layers (mm):").arg(
-      QString::fromStdString(object.name).toHtmlEscaped());
+  QString html = QStringLiteral("<b>%1</b> layers (mm):")
+                     .arg(QString::fromStdString(object.name).toHtmlEscaped());
   for (int i = 0; i < layers; ++i) {
     const cv::Scalar bgr = LayerColor(i, layers);
     const QColor colour(static_cast<int>(bgr[2]), static_cast<int>(bgr[1]),
@@ -194,8 +194,9 @@ QWidget* DetectionPanel::BuildResultsArea() {
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->verticalHeader()->setVisible(false);
-  table_->setToolTip(tr("Double-click a detection to see it in the 3D view against the capture's "
-                        "points"));
+  table_->setToolTip(
+      tr("Double-click a detection to see it in the 3D view against the capture's "
+         "points"));
   connect(table_, &QTableWidget::cellDoubleClicked, this,
           [this](int row) { emit DetectionActivated(row); });
   FillDetectionTable(table_, {});
@@ -227,9 +228,10 @@ void DetectionPanel::OpenBopFrameDialog() {
 void DetectionPanel::OpenCaptureFilesDialog() {
   const QString color = AskOpenPath(this, "capture", tr("Colour image"), ImageFileFilter());
   if (color.isEmpty()) return;
-  const QString depth = AskOpenPath(this, "capture", tr("Depth image (16-bit PNG, mm; Cancel: none)"),
-                                    ImageFileFilter());
-  const QString camera = AskOpenPath(this, "camera", tr("Camera (BOP camera.json)"), JsonFileFilter());
+  const QString depth = AskOpenPath(
+      this, "capture", tr("Depth image (16-bit PNG, mm; Cancel: none)"), ImageFileFilter());
+  const QString camera =
+      AskOpenPath(this, "camera", tr("Camera (BOP camera.json)"), JsonFileFilter());
   if (camera.isEmpty()) return;
   OpenCapture({{}, 0, 0, color, depth, camera});
 }
@@ -264,12 +266,11 @@ void DetectionPanel::RunPending() {
 }
 
 bool DetectionPanel::StartLoad(const CaptureSource& source) {
-  return runner_->Start(tr("Open capture %1").arg(source.Describe()),
-                        [this, source](const JobControl&) {
-                          auto capture = std::make_shared<const Capture>(LoadCaptureSource(source));
-                          return JobRunner::Commit(
-                              [this, source, capture] { ShowCapture(source, capture); });
-                        });
+  return runner_->Start(
+      tr("Open capture %1").arg(source.Describe()), [this, source](const JobControl&) {
+        auto capture = std::make_shared<const Capture>(LoadCaptureSource(source));
+        return JobRunner::Commit([this, source, capture] { ShowCapture(source, capture); });
+      });
 }
 
 void DetectionPanel::ShowCapture(const CaptureSource& source,
@@ -387,11 +388,10 @@ QString DetectionPanel::ArchiveText() const {
 
 void DetectionPanel::UpdateState() {
   const auto archive = session_->archive();
-  archive_label_->setText(archive == nullptr
-                              ? tr("No template set: train one or open an archive.")
-                              : tr("Templates: %1, %2 templates")
-                                    .arg(ArchiveText())
-                                    .arg(archive->templates().size()));
+  archive_label_->setText(
+      archive == nullptr
+          ? tr("No template set: train one or open an archive.")
+          : tr("Templates: %1, %2 templates").arg(ArchiveText()).arg(archive->templates().size()));
   detect_->setEnabled(!runner_->busy() && capture_ != nullptr && archive != nullptr);
 }
 

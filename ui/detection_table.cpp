@@ -24,24 +24,24 @@ QString RotationText(const Eigen::Matrix3d& rotation) {
 }  // namespace
 
 QStringList DetectionColumnTitles() {
-  return {QObject::tr("Object"),       QObject::tr("Score"),    QObject::tr("Layer"),
+  return {QObject::tr("Object"),        QObject::tr("Score"),    QObject::tr("Layer"),
           QObject::tr("Position (mm)"), QObject::tr("Rotation"), QObject::tr("ICP")};
 }
 
 QStringList DetectionRowTexts(const Detection& detection) {
   const Eigen::Vector3d& t = detection.cam_from_model.t;
-  const QString object = QStringLiteral("%1 (%2)")
-                             .arg(QString::fromStdString(detection.name))
-                             .arg(detection.obj_id);
+  const QString object =
+      QStringLiteral("%1 (%2)").arg(QString::fromStdString(detection.name)).arg(detection.obj_id);
   const QString icp = detection.icp.iterations > 0
                           ? QObject::tr("%1 mm rms").arg(Number(detection.icp.rmse_mm, 2))
                           : QObject::tr("not refined");
-  return {object,
-          QStringLiteral("%1 %").arg(Number(detection.score)),
-          QObject::tr("%1: %2 mm").arg(detection.layer_index).arg(Number(detection.layer_depth_mm, 0)),
-          QStringLiteral("(%1, %2, %3)").arg(Number(t.x()), Number(t.y()), Number(t.z())),
-          RotationText(detection.cam_from_model.R),
-          icp};
+  return {
+      object,
+      QStringLiteral("%1 %").arg(Number(detection.score)),
+      QObject::tr("%1: %2 mm").arg(detection.layer_index).arg(Number(detection.layer_depth_mm, 0)),
+      QStringLiteral("(%1, %2, %3)").arg(Number(t.x()), Number(t.y()), Number(t.z())),
+      RotationText(detection.cam_from_model.R),
+      icp};
 }
 
 void FillDetectionTable(QTableWidget* table, const std::vector<Detection>& detections) {

@@ -2,8 +2,8 @@
 #include "ui/main_window.h"
 
 #include <QCloseEvent>
-#include <QFileInfo>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QMenu>
 #include <QMimeData>
 #include <QScrollArea>
@@ -159,8 +159,7 @@ void MainWindow::OpenFiles(const QStringList& paths) {
 }
 
 bool MainWindow::IsIdle() const {
-  return !runner_->busy() && !files_->has_queued_files() &&
-         !detection_panel_->has_pending_work() &&
+  return !runner_->busy() && !files_->has_queued_files() && !detection_panel_->has_pending_work() &&
          browser_->list_model()->pending_thumbnails() == 0;
 }
 

@@ -84,10 +84,10 @@ void SceneView::SetCoverage(const std::vector<double>& layer_depths_mm,
     coverage_ = MakeCoverageActor(model_->sphere, layer_depths_mm, views, &coverage_glyphs_);
   }
   if (coverage_ != nullptr) {
-    coverage_radius_mm_ = (GlyphPosition(model_->sphere, {}, layer_depths_mm.back(),
-                                         layer_depths_mm.front()) -
-                           model_->sphere.centre)
-                              .norm();
+    coverage_radius_mm_ =
+        (GlyphPosition(model_->sphere, {}, layer_depths_mm.back(), layer_depths_mm.front()) -
+         model_->sphere.centre)
+            .norm();
   }
   if (coverage_ != nullptr) {
     scalar_bar_ = MakeDepthScalarBar(coverage_);

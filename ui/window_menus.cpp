@@ -77,8 +77,8 @@ void BuildViewMenu(QMainWindow* window, SceneView* scene, QToolBar* tools) {
 
 }  // namespace
 
-void BuildWindowMenus(QMainWindow* window, StudioFiles* files, QMenu* recent_menu,
-                      SceneView* scene, DetectionPanel* detection) {
+void BuildWindowMenus(QMainWindow* window, StudioFiles* files, QMenu* recent_menu, SceneView* scene,
+                      DetectionPanel* detection) {
   QToolBar* tools = window->addToolBar(QObject::tr("Main"));
   tools->setObjectName("MainToolBar");
   BuildFileMenu(window, files, recent_menu, detection, tools);

@@ -9,10 +9,10 @@
 #include "ui/capture_source.h"
 #include "ui/detection_panel.h"
 #include "ui/main_window.h"
-#include "ui/studio_session.h"
-#include "ui/template_browser.h"
 #include "ui/screenshot.h"
 #include "ui/studio_dialogs.h"
+#include "ui/studio_session.h"
+#include "ui/template_browser.h"
 #include "util/version.h"
 
 namespace {
@@ -32,8 +32,8 @@ struct CaptureOptions {
       "overlays", "Overlays shown: any of regions,coarse,matches,poses (default: poses).", "list"};
 
   void AddTo(QCommandLineParser& parser) const {
-    parser.addOptions({bop, scene, frame, color, depth, camera, overlays, show_detection,
-                       select_template});
+    parser.addOptions(
+        {bop, scene, frame, color, depth, camera, overlays, show_detection, select_template});
   }
 };
 
@@ -41,12 +41,20 @@ struct CaptureOptions {
 bool CaptureFromArguments(const QCommandLineParser& parser, const CaptureOptions& options,
                           layermod::ui::CaptureSource* source) {
   if (parser.isSet(options.bop)) {
-    *source = {parser.value(options.bop), parser.value(options.scene).toInt(),
-               parser.value(options.frame).toInt(), {}, {}, {}};
+    *source = {parser.value(options.bop),
+               parser.value(options.scene).toInt(),
+               parser.value(options.frame).toInt(),
+               {},
+               {},
+               {}};
     return true;
   }
   if (!parser.isSet(options.color)) return false;
-  *source = {{}, 0, 0, parser.value(options.color), parser.value(options.depth),
+  *source = {{},
+             0,
+             0,
+             parser.value(options.color),
+             parser.value(options.depth),
              parser.value(options.camera)};
   return true;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <QCheckBox>
 #include <QDir>
+#include <QFile>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSignalSpy>
@@ -8,6 +9,7 @@
 #include <QTableWidget>
 #include <QTest>
 
+#include "dataset/bop_writer.h"
 #include "ui/detection_panel.h"
 #include "ui/image_view.h"
 #include "ui/job_runner.h"
@@ -108,6 +110,24 @@ class DetectionPanelTest : public QObject {
     QCOMPARE(closer.object_name(), QStringLiteral("errorDialog"));
     QVERIFY2(closer.text().contains(files.bop_dir), qPrintable(closer.text()));
     QVERIFY(!window_->detection_panel()->has_capture());
+  }
+
+  void OtherIntrinsicsShowADetectionError() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    PinholeCamera other = LoadCameraJson(files.camera.toStdString());
+    other.fx *= 1.2;
+    const QString camera = QDir(ScratchDir()).filePath("other_camera.json");
+    WriteBopCamera(camera.toStdString(), other);
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy opened(panel, &DetectionPanel::CaptureOpened);
+    MessageBoxCloser closer(QMessageBox::Ok);
+    panel->OpenCapture({{}, 0, 0, files.color, files.depth, camera});
+    QTRY_VERIFY_WITH_TIMEOUT(closer.seen(), 60000);
+    QCOMPARE(opened.count(), 1);
+    QVERIFY2(closer.text().contains("Detect in") && closer.text().contains(files.color),
+             qPrintable(closer.text()));
+    QVERIFY(!panel->has_result());
+    QCOMPARE(panel->table()->rowCount(), 0);
   }
 
   void UnreadableColourShowsAnErrorNamingTheFile() {
