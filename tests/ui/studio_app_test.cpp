@@ -38,6 +38,24 @@ class StudioAppTest : public QObject {
     QVERIFY(colours.size() > 20);
   }
 
+  void ScreenshotOfTheDetectionPreviewRunsDetection() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    const QString png = QDir(ScratchDir()).filePath("studio_detection.png");
+    const Run run = Studio({files.archive, "--bop", files.bop_dir, "--scene", "1", "--frame", "0",
+                            "--overlays", "regions,poses", "--screenshot", png});
+    QVERIFY2(run.exit_code == 0, qPrintable(run.output));
+    const QImage image(png);
+    QVERIFY(image.width() >= 640 && image.height() >= 480);
+  }
+
+  void MissingCaptureFolderFailsTheScreenshotRun() {
+    const QString missing = QDir(ScratchDir()).filePath("no_such_dataset");
+    const QString png = QDir(ScratchDir()).filePath("studio_no_capture.png");
+    const Run run = Studio({"--bop", missing, "--screenshot", png});
+    QCOMPARE(run.exit_code, 1);
+    QVERIFY2(run.output.contains("no_such_dataset"), qPrintable(run.output));
+  }
+
   void UnreadableFileFailsTheScreenshotRun() {
     const QString png = QDir(ScratchDir()).filePath("studio_bad.png");
     const Run run = Studio({QDir(ScratchDir()).filePath("missing.ply"), "--screenshot", png});
