@@ -8,8 +8,7 @@
 #include <vector>
 
 #include "cli/evaluation_args.h"
-#include "cli/interrupt.h"
-#include "cli/progress_bar.h"
+#include "cli/progress_job.h"
 #include "eval/bench.h"
 #include "eval/bop_targets.h"
 #include "pipeline/detector.h"
@@ -32,26 +31,6 @@ void RequireReleaseBuild() {
 #endif
 }
 
-BenchResult BenchWithProgress(const Detector& detector, const DetectorOptions& options,
-                              const BenchArgs& args, const FrameSelectionOptions& selection,
-                              const EvalMetricOptions& metrics) {
-  CancelToken cancel;
-  InterruptScope interrupt(cancel);
-  ProgressBar bar;
-  const JobControl job([&bar](std::size_t done, std::size_t total,
-                              std::string_view stage) { bar.Update(done, total, stage); },
-                       &cancel);
-  try {
-    const BenchSuite suite = args.color_only ? BenchSuite::kColorOnly : BenchSuite::kDepth;
-    BenchResult result = RunBench(detector, suite, options, args.dataset, selection, metrics, job);
-    bar.Finish();
-    return result;
-  } catch (...) {
-    bar.Finish();
-    throw;
-  }
-}
-
 void RunBenchCommand(const BenchArgs& args) {
   RequireReleaseBuild();
   DetectorOptions options;
@@ -61,7 +40,10 @@ void RunBenchCommand(const BenchArgs& args) {
   const FrameSelectionOptions selection = BuildSelection(args);
   CheckWritableTarget(args.out);
   const Detector detector = LoadDetector(args);
-  const BenchResult result = BenchWithProgress(detector, options, args, selection, metrics);
+  const BenchSuite suite = args.color_only ? BenchSuite::kColorOnly : BenchSuite::kDepth;
+  const BenchResult result = RunWithProgress([&](const JobControl& job) {
+    return RunBench(detector, suite, options, args.dataset, selection, metrics, job);
+  });
   WriteFileAtomically(
       args.out, BenchReportJson(BuildRunInfo(args, selection, metrics), result).dump(2) + "\n");
   std::printf("%s", BenchTable(result).c_str());

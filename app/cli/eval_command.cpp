@@ -8,8 +8,7 @@
 #include <vector>
 
 #include "cli/evaluation_args.h"
-#include "cli/interrupt.h"
-#include "cli/progress_bar.h"
+#include "cli/progress_job.h"
 #include "eval/bop_targets.h"
 #include "eval/eval_report.h"
 #include "eval/evaluation.h"
@@ -25,25 +24,6 @@ struct EvalArgs : EvaluationArgs {
   std::string out;
 };
 
-Evaluation EvaluateWithProgress(const Detector& detector, const DetectorOptions& options,
-                                const EvalArgs& args, const FrameSelectionOptions& selection,
-                                const EvalMetricOptions& metrics) {
-  CancelToken cancel;
-  InterruptScope interrupt(cancel);
-  ProgressBar bar;
-  const JobControl job([&bar](std::size_t done, std::size_t total,
-                              std::string_view stage) { bar.Update(done, total, stage); },
-                       &cancel);
-  try {
-    Evaluation evaluation = Evaluate(detector, options, args.dataset, selection, metrics, job);
-    bar.Finish();
-    return evaluation;
-  } catch (...) {
-    bar.Finish();
-    throw;
-  }
-}
-
 void RunEval(const EvalArgs& args) {
   DetectorOptions options;
   options.mode = ParseDetectionMode(args.mode);
@@ -52,7 +32,9 @@ void RunEval(const EvalArgs& args) {
   const FrameSelectionOptions selection = BuildSelection(args);
   CheckReportFolder(args.out);
   const Detector detector = LoadDetector(args);
-  const Evaluation evaluation = EvaluateWithProgress(detector, options, args, selection, metrics);
+  const Evaluation evaluation = RunWithProgress([&](const JobControl& job) {
+    return Evaluate(detector, options, args.dataset, selection, metrics, job);
+  });
   EvalRunInfo info = BuildRunInfo(args, selection, metrics);
   info.mode = args.mode;
   WriteEvalReport(args.out, info, evaluation.summary, evaluation.run);

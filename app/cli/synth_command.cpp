@@ -6,8 +6,7 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "cli/interrupt.h"
-#include "cli/progress_bar.h"
+#include "cli/progress_job.h"
 #include "geometry/camera.h"
 #include "synth/synthesizer.h"
 #include "util/error.h"
@@ -82,20 +81,8 @@ void PrintSummary(const SynthSummary& summary) {
 
 void RunSynth(const SynthArgs& args) {
   const SynthOptions options = BuildOptions(args);
-  CancelToken cancel;
-  InterruptScope interrupt(cancel);
-  ProgressBar bar;
-  const JobControl job([&bar](std::size_t done, std::size_t total,
-                              std::string_view stage) { bar.Update(done, total, stage); },
-                       &cancel);
-  SynthSummary summary;
-  try {
-    summary = SynthesizeScenes(options, job);
-  } catch (...) {
-    bar.Finish();
-    throw;
-  }
-  bar.Finish();
+  const SynthSummary summary = RunWithProgress(
+      [&](const JobControl& job) { return SynthesizeScenes(options, job); });
   PrintSummary(summary);
 }
 
