@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The main job on the bundled sample, from a fresh Debian 12 machine: install dependencies,
-# build, train the sample part into an archive and inspect it. Outputs go to ./out/sample.
+# build, train the sample part into an archive and inspect it, then synthesise RGB-D scenes of it
+# and detect it there. Outputs go to ./out/sample.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash packaging/install-deps.sh
@@ -13,4 +14,11 @@ mkdir -p out/sample
 ./build/app/layermod inspect out/sample/bracket.layermod
 ./build/app/layermod render --archive out/sample/bracket.layermod --out out/sample/templates \
   --every 500
-echo "sample done: out/sample/bracket.layermod, template renders in out/sample/templates"
+rm -rf out/sample/scenes
+./build/app/layermod synth --models resources/sample/bracket.ply --obj-ids 1 --scenes 3 --seed 1 \
+  --camera resources/sample/camera.json --out out/sample/scenes
+./build/app/layermod detect --archive out/sample/bracket.layermod --bop out/sample/scenes/test \
+  --scene 1 --frame 0 --json out/sample/detection.json --overlay out/sample/detection.png \
+  --overlay-stages out/sample/stages
+echo "sample done: out/sample/bracket.layermod, template renders in out/sample/templates,"
+echo "detection in out/sample/detection.{json,png} and out/sample/stages"
