@@ -17,6 +17,7 @@ namespace layermod::cli {
 namespace {
 
 struct TrainArgs {
+  bool dry_run = false;
   std::string model;
   std::string name;
   std::string camera;
@@ -65,7 +66,20 @@ void PrintSummary(const TrainingSummary& summary, const std::string& out) {
   std::printf("archive       %s\n", out.c_str());
 }
 
+// The plan alone: what a run would make, and roughly how much memory it takes.
+void PrintPlan(const TrainingPlan& plan, const TrainingRequest& request) {
+  std::printf("radius        %.2f mm (diameter %.2f mm)\n", plan.radius_mm, 2.0 * plan.radius_mm);
+  std::printf("depth layers  %zu:", plan.layer_depths_mm.size());
+  for (double depth_mm : plan.layer_depths_mm) std::printf(" %.0f", depth_mm);
+  std::printf(" mm\n");
+  std::printf("views         %zu per layer\n", plan.views.size());
+  std::printf("templates     %zu\n", plan.TemplateCount());
+  std::printf("memory        about %.1f MiB for the templates\n",
+              static_cast<double>(plan.EstimatedBytes(request.profile.features)) / (1 << 20));
+}
+
 void RunTrain(const TrainArgs& args) {
+  if (!args.dry_run && args.out.empty()) throw CLI::RequiredError("--out");
   TrainingRequest request;
   request.obj_id = args.obj_id;
   request.name = args.name;
@@ -73,13 +87,17 @@ void RunTrain(const TrainArgs& args) {
   request.profile = BuildProfile(args);
   request.threads = args.threads;
   request.max_render_triangles = args.max_triangles;
-  CheckWritableTarget(args.out);  // fail before the work, not after it
+  if (!args.dry_run) CheckWritableTarget(args.out);  // fail before the work, not after it
 
   LoadModelOptions load_options;
   load_options.units = ParseLengthUnit(args.units);
   const Model model = LoadModel(args.model, load_options);
   if (request.name.empty()) request.name = model.source.stem().string();
   const TrainingPlan plan = PlanTraining(model, request);
+  if (args.dry_run) {
+    PrintPlan(plan, request);
+    return;
+  }
   // Ctrl-C is caught from here on: it cancels the job and nothing is written.
   CancelToken cancel;
   InterruptScope interrupt(cancel);
@@ -133,7 +151,9 @@ void AddTrainCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
-  command->add_option("--out", args->out, "Output archive (*.layermod)")->required();
+  command->add_option("--out", args->out, "Output archive (*.layermod)");
+  command->add_flag("--dry-run", args->dry_run,
+                    "Print the plan (layers, views, templates, memory) and stop; no --out needed");
   command->callback([args] { RunTrain(*args); });
 }
 
