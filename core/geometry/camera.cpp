@@ -7,16 +7,17 @@
 
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/quoted.h"
 
 namespace layermod {
 namespace {
 
 double ReadNumber(const nlohmann::json& json, const char* key, const std::filesystem::path& path) {
   if (!json.contains(key)) {
-    throw FormatError("'" + path.string() + "': camera field '" + key + "' is missing");
+    throw FormatError(Quoted(path) + ": camera field " + Quoted(std::string_view(key)) + " is missing");
   }
   if (!json[key].is_number()) {
-    throw FormatError("'" + path.string() + "': camera field '" + key + "' is not a number");
+    throw FormatError(Quoted(path) + ": camera field " + Quoted(std::string_view(key)) + " is not a number");
   }
   return json[key].get<double>();
 }
@@ -48,7 +49,7 @@ PinholeCamera LoadCameraJson(const std::filesystem::path& path) {
   const std::string text = ReadFileBytes(path);
   nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (json.is_discarded() || !json.is_object()) {
-    throw FormatError("'" + path.string() + "': not a JSON object");
+    throw FormatError(Quoted(path) + ": not a JSON object");
   }
   PinholeCamera camera;
   camera.fx = ReadNumber(json, "fx", path);
@@ -59,14 +60,14 @@ PinholeCamera LoadCameraJson(const std::filesystem::path& path) {
   const double height = ReadNumber(json, "height", path);
   if (width != std::floor(width) || height != std::floor(height) || width < 1 || height < 1 ||
       width > 16384 || height > 16384) {
-    throw FormatError("'" + path.string() + "': width and height must be positive integers");
+    throw FormatError(Quoted(path) + ": width and height must be positive integers");
   }
   camera.width = static_cast<int>(width);
   camera.height = static_cast<int>(height);
   try {
     camera.Validate();
   } catch (const Error& error) {
-    throw FormatError("'" + path.string() + "': " + error.what());
+    throw FormatError(Quoted(path) + ": " + error.what());
   }
   return camera;
 }

@@ -178,6 +178,14 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       PrepareScene(used.color, used.depth_mm, used.camera, features, options.match.simd);
   result.timings.prepare_ms = MsSince(stage_start);
 
+  // Coarse positioning counts depth edges with sensor holes filled: the same for every object.
+  cv::Mat filled_depth_mm;
+  if (options.mode == DetectionMode::kScenePatch) {
+    stage_start = Clock::now();
+    filled_depth_mm = FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px);
+    result.timings.coarse_ms += MsSince(stage_start);
+  }
+
   for (const ObjectEntry& entry : objects_) {
     const TemplateArchive& archive = archives_[entry.archive];
     const ArchiveObject& object = archive.Object(entry.obj_id);
@@ -192,8 +200,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       stage_start = Clock::now();
       const float edge_threshold_mm =
           features.depth_edge_fraction * static_cast<float>(object.bbox_size.maxCoeff());
-      const cv::Mat edges = DepthEdgeMask(
-          FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px), edge_threshold_mm);
+      const cv::Mat edges = DepthEdgeMask(filled_depth_mm, edge_threshold_mm);
       diagnostics.coarse = PositionCoarsely(diagnostics.division, used.depth_mm, edges,
                                             used.camera.fx, object.diameter_mm,
                                             entry.edge_ranges, options.coarse);

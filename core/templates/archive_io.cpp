@@ -35,6 +35,7 @@
 #include "templates/zip_container.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/quoted.h"
 
 namespace layermod {
 namespace {
@@ -194,7 +195,7 @@ void WriteArchive(const std::filesystem::path& path, const TemplateArchive& arch
   try {
     bytes = EncodeArchive(archive);
   } catch (const Error& error) {
-    throw Error("'" + path.string() + "': archive not written: " + error.what());
+    throw Error(Quoted(path) + ": archive not written: " + error.what());
   }
   WriteFileAtomically(path, bytes);
 }

@@ -9,6 +9,7 @@
 #include "templates/json_fields.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/quoted.h"
 
 namespace layermod {
 namespace {
@@ -113,14 +114,6 @@ FeatureOptions ReadFeatures(const JsonFields& fields) {
   return options;
 }
 
-std::string FileName(const std::filesystem::path& path) {
-  // Built by appending: GCC 12 warns falsely (-Wrestrict) about "'" + std::string.
-  std::string name(1, '\'');
-  name += path.string();
-  name += '\'';
-  return name;
-}
-
 }  // namespace
 
 ViewSamplingOptions TrainingProfile::DefaultEnvelopeViews() {
@@ -189,7 +182,7 @@ void SaveTrainingProfile(const std::filesystem::path& path, const TrainingProfil
   try {
     profile.Validate();
   } catch (const Error& error) {
-    throw Error(FileName(path) + ": not saved: " + error.what());
+    throw Error(Quoted(path) + ": not saved: " + error.what());
   }
   WriteFileAtomically(path, ToJson(profile).dump(2) + "\n");
 }
@@ -197,11 +190,11 @@ void SaveTrainingProfile(const std::filesystem::path& path, const TrainingProfil
 TrainingProfile LoadTrainingProfile(const std::filesystem::path& path) {
   const std::string text = ReadFileBytes(path);
   const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (json.is_discarded()) throw FormatError(FileName(path) + ": not valid JSON");
+  if (json.is_discarded()) throw FormatError(Quoted(path) + ": not valid JSON");
   try {
     return TrainingProfileFromJson(json);
   } catch (const FormatError& error) {
-    throw FormatError(FileName(path) + ": " + error.what());
+    throw FormatError(Quoted(path) + ": " + error.what());
   }
 }
 

@@ -12,13 +12,14 @@
 #include <string>
 
 #include "util/error.h"
+#include "util/quoted.h"
 
 namespace layermod {
 namespace fs = std::filesystem;
 namespace {
 
 std::string Describe(const fs::path& path, std::string_view problem) {
-  return "'" + path.string() + "': " + std::string(problem);
+  return Quoted(path) + ": " + std::string(problem);
 }
 
 std::string ErrnoText() { return std::strerror(errno); }

@@ -18,30 +18,14 @@ using ::testing::HasSubstr;
 
 constexpr int kImages = 3;
 
-class EvalCliTest : public ::testing::Test {
+class EvalCliTest : public test::TinyEvalSuite<kImages> {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new test::TempDir;
-    data_ = new test::TinyEvalData(test::MakeTinyEvalData(dir_->path(), kImages));
-  }
-  static void TearDownTestSuite() {
-    delete data_;
-    delete dir_;
-    data_ = nullptr;
-    dir_ = nullptr;
-  }
-
   static std::vector<std::string> EvalArgs(const fs::path& out) {
     return {
         "eval",  "--archive", data_->archive_file.string(), "--dataset", data_->dataset.string(),
         "--out", out.string()};
   }
-
-  static test::TempDir* dir_;
-  static test::TinyEvalData* data_;
 };
-test::TempDir* EvalCliTest::dir_ = nullptr;
-test::TinyEvalData* EvalCliTest::data_ = nullptr;
 
 TEST_F(EvalCliTest, WritesTheReportAndPrintsTheTable) {
   test::TempDir out;

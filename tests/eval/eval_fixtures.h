@@ -4,6 +4,9 @@
 
 #include <filesystem>
 
+#include <gtest/gtest.h>
+
+#include "support/test_paths.h"
 #include "templates/archive.h"
 
 namespace layermod::test {
@@ -20,5 +23,24 @@ TemplateArchive TrainBracketArchive(double dmin_mm, double dmax_mm);
 // `images` seeded synthetic images of object 1 (bracket) in `dir`/data and an archive of a few
 // dozen templates over 600..1200 mm in `dir`/bracket.layermod.
 TinyEvalData MakeTinyEvalData(const std::filesystem::path& dir, int images);
+
+// A test suite sharing one tiny dataset of `kImages` images, made once for the whole suite.
+template <int kImages>
+class TinyEvalSuite : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir;
+    data_ = new TinyEvalData(MakeTinyEvalData(dir_->path(), kImages));
+  }
+  static void TearDownTestSuite() {
+    delete data_;
+    delete dir_;
+    data_ = nullptr;
+    dir_ = nullptr;
+  }
+
+  static inline TempDir* dir_ = nullptr;
+  static inline TinyEvalData* data_ = nullptr;
+};
 
 }  // namespace layermod::test

@@ -25,28 +25,12 @@ using ::testing::HasSubstr;
 
 constexpr int kImages = 4;
 
-class EvaluationTest : public ::testing::Test {
+class EvaluationTest : public test::TinyEvalSuite<kImages> {
  protected:
-  static void SetUpTestSuite() {
-    dir_ = new test::TempDir;
-    data_ = new test::TinyEvalData(test::MakeTinyEvalData(dir_->path(), kImages));
-  }
-  static void TearDownTestSuite() {
-    delete data_;
-    delete dir_;
-    data_ = nullptr;
-    dir_ = nullptr;
-  }
-
   static EvalPlan Plan(const FrameSelectionOptions& selection = {}) {
     return PlanEvaluation(data_->dataset, {1}, selection, true);
   }
-
-  static test::TempDir* dir_;
-  static test::TinyEvalData* data_;
 };
-test::TempDir* EvaluationTest::dir_ = nullptr;
-test::TinyEvalData* EvaluationTest::data_ = nullptr;
 
 // Returns every annotated instance at its true pose, moved by `offset_mm` along the camera's x.
 EvalMethod Oracle(double offset_mm) {
