@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// Fuzz target: the *.layermod reader. Any input must load or fail with a layermod::Error that
+// names the file; anything else (crash, other exception, sanitizer report) is a finding.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "fuzz/fuzz_input.h"
+#include "templates/archive.h"
+#include "util/error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace layermod;
+  const std::string name = "fuzz-input.layermod";
+  try {
+    const TemplateArchive archive = ReadArchiveBytes(fuzz::AsText(data, size), name);
+    for (const ArchiveObject& object : archive.manifest().objects) {
+      const auto all = archive.TemplatesOf(object.obj_id);
+      std::size_t in_layers = 0;
+      for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
+        in_layers += archive.TemplatesOf(object.obj_id, static_cast<int>(layer)).size();
+      }
+      if (in_layers != all.size()) std::abort();  // the index must partition the templates
+    }
+  } catch (const Error& error) {
+    if (std::string(error.what()).find(name) == std::string::npos) {
+      std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
+      std::abort();
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Helpers shared by the fuzz targets: the loaders under test read files, so each input is
+// written to a scratch directory first (in memory under /dev/shm when it exists).
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace layermod::fuzz {
+
+// Separates the files of a multi-file input (a capture: camera JSON, depth PNG, colour PNG).
+// Text that cannot occur by chance in a seed, short enough for the mutator to keep or make.
+inline constexpr std::string_view kPartSeparator = "\n--LMFZ--\n";
+
+// Splits `bytes` on kPartSeparator into exactly `count` parts (missing ones are empty, extra
+// separators stay inside the last part).
+std::vector<std::string_view> SplitParts(std::string_view bytes, std::size_t count);
+
+// Joins files into one input, the inverse of SplitParts (for making seeds).
+std::string JoinParts(const std::vector<std::string>& parts);
+
+// A per-process scratch directory, emptied before each input.
+const std::filesystem::path& ScratchDir();
+void ClearScratchDir();
+
+// Writes `bytes` to ScratchDir()/name and returns the path.
+std::filesystem::path WriteScratchFile(const std::string& name, std::string_view bytes);
+
+inline std::string_view AsText(const std::uint8_t* data, std::size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+}  // namespace layermod::fuzz
