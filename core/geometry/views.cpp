@@ -16,7 +16,8 @@ constexpr double kAngleEps = 1e-9;
 double ParseDouble(std::string_view text, std::string_view name) {
   double value = 0.0;
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (result.ec != std::errc() || result.ptr != text.data() + text.size() || !std::isfinite(value)) {
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size() ||
+      !std::isfinite(value)) {
     throw Error(std::string(name) + ": '" + std::string(text) + "' is not a number");
   }
   return value;
@@ -30,21 +31,39 @@ Eigen::Vector3d DirectionFromAngles(double azimuth_deg, double elevation_deg) {
 
 // Fibonacci lattice on the whole sphere with about `spacing_deg` between neighbours; keeps the
 // directions whose elevation lies in `elevation`.
-std::vector<ViewAngles> EvenDirections(double spacing_deg, const AngleRange& elevation) {
+int FibonacciPointCount(double spacing_deg) {
   const double spacing_rad = DegToRad(spacing_deg);
-  const int count = std::max(2, static_cast<int>(std::lround(4.0 * kPi / (spacing_rad * spacing_rad))));
+  return std::max(2, static_cast<int>(std::lround(4.0 * kPi / (spacing_rad * spacing_rad))));
+}
+
+double FibonacciElevationDeg(int i, int count) {
+  return RadToDeg(std::asin(1.0 - (2.0 * i + 1.0) / count));
+}
+
+bool InElevationRange(double elevation_deg, const AngleRange& elevation) {
+  return elevation_deg >= elevation.min_deg - kAngleEps &&
+         elevation_deg <= elevation.max_deg + kAngleEps;
+}
+
+std::vector<ViewAngles> EvenDirections(double spacing_deg, const AngleRange& elevation) {
+  const int count = FibonacciPointCount(spacing_deg);
   const double golden_angle = kPi * (3.0 - std::sqrt(5.0));
   std::vector<ViewAngles> views;
   for (int i = 0; i < count; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / count;
-    const double elevation_deg = RadToDeg(std::asin(z));
-    if (elevation_deg < elevation.min_deg - kAngleEps || elevation_deg > elevation.max_deg + kAngleEps) {
-      continue;
-    }
+    const double elevation_deg = FibonacciElevationDeg(i, count);
+    if (!InElevationRange(elevation_deg, elevation)) continue;
     double azimuth_deg = std::fmod(RadToDeg(golden_angle * i), 360.0);
     views.push_back({azimuth_deg, elevation_deg, 0.0});
   }
   return views;
+}
+
+std::size_t CountEvenDirections(double spacing_deg, const AngleRange& elevation) {
+  const int count = FibonacciPointCount(spacing_deg);
+  std::size_t kept = 0;
+  for (int i = 0; i < count; ++i)
+    kept += InElevationRange(FibonacciElevationDeg(i, count), elevation);
+  return kept;
 }
 
 }  // namespace
@@ -60,10 +79,16 @@ void AngleRange::Validate(std::string_view name) const {
   }
 }
 
+std::size_t AngleRange::Count() const {
+  return static_cast<std::size_t>(std::floor((max_deg - min_deg) / step_deg + 1e-6)) + 1;
+}
+
 std::vector<double> AngleRange::Values() const {
   std::vector<double> values;
-  const int count = static_cast<int>(std::floor((max_deg - min_deg) / step_deg + 1e-6)) + 1;
-  for (int i = 0; i < count; ++i) values.push_back(min_deg + i * step_deg);
+  const std::size_t count = Count();
+  values.reserve(count);
+  for (std::size_t i = 0; i < count; ++i)
+    values.push_back(min_deg + static_cast<double>(i) * step_deg);
   return values;
 }
 
@@ -99,8 +124,21 @@ void ViewSamplingOptions::Validate() const {
   }
 }
 
-std::vector<ViewAngles> SampleViews(const ViewSamplingOptions& options) {
+std::size_t CountViews(const ViewSamplingOptions& options) {
   options.Validate();
+  const std::size_t directions =
+      options.even_spacing_deg > 0.0
+          ? CountEvenDirections(options.even_spacing_deg, options.elevation)
+          : options.elevation.Count() * options.azimuth.Count();
+  return directions * options.roll.Count();  // each count <= 100001: no overflow
+}
+
+std::vector<ViewAngles> SampleViews(const ViewSamplingOptions& options) {
+  const std::size_t count = CountViews(options);
+  if (count > kMaxSampledViews) {
+    throw Error("views: the view ranges give " + std::to_string(count) + " views, more than " +
+                std::to_string(kMaxSampledViews) + "; use larger angle steps");
+  }
   std::vector<ViewAngles> directions;
   if (options.even_spacing_deg > 0.0) {
     directions = EvenDirections(options.even_spacing_deg, options.elevation);

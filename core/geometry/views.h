@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,7 +19,8 @@ struct AngleRange {
 
   void Validate(std::string_view name) const;  // throws Error naming the range
   std::vector<double> Values() const;
-  std::string ToString() const;                // "min:step:max"
+  std::size_t Count() const;     // Values().size(), without allocating
+  std::string ToString() const;  // "min:step:max"
   static AngleRange Parse(std::string_view text, std::string_view name);  // throws Error
   bool operator==(const AngleRange&) const = default;
 };
@@ -44,6 +46,14 @@ struct ViewSamplingOptions {
   bool operator==(const ViewSamplingOptions&) const = default;
 };
 
+// SampleViews refuses grids larger than this (a typo such as a 0.001 degree step would otherwise
+// ask for billions of views before anything could say it is too much).
+inline constexpr std::size_t kMaxSampledViews = 10'000'000;
+
+// The number of views SampleViews returns, computed without sampling them (validates first).
+std::size_t CountViews(const ViewSamplingOptions& options);
+
+// Throws Error when the options are invalid or give more than kMaxSampledViews views.
 std::vector<ViewAngles> SampleViews(const ViewSamplingOptions& options);
 
 // Camera pose that sees the sphere centre `centre_in_model` at distance `distance_mm` on the

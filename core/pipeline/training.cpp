@@ -4,17 +4,19 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "features/extraction.h"
-#include "mesh/decimation.h"
 #include "features/template_edges.h"
+#include "mesh/decimation.h"
 #include "render/rasterizer.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -23,8 +25,18 @@
 namespace layermod {
 namespace {
 
-// A single run may not allocate more than this for its templates.
-constexpr std::size_t kMaxArchiveBytes = std::size_t{8} << 30;
+constexpr std::size_t kMaxTrainingBytes = std::size_t{8} << 30;
+
+std::string MiB(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
+void RefuseOversizedRun(std::size_t templates, const FeatureOptions& features) {
+  const std::size_t needed = EstimatedTemplateBytes(templates, features);
+  const std::size_t limit = TrainingMemoryLimitBytes();
+  if (templates <= 0xFFFFFFFFu && needed <= limit) return;
+  throw Error("training: " + std::to_string(templates) + " templates would need about " +
+              MiB(needed) + " of memory, more than the " + MiB(limit) +
+              " a run may use on this machine; reduce the depth range or the view sampling");
+}
 
 float MedianDepthMm(const RenderedView& view) {
   std::vector<float> depths;
@@ -83,8 +95,8 @@ RenderMesh RenderMeshFor(const Model& model, const TrainingRequest& request) {
     return ToRenderMesh(model);
   }
   Model simplified = model;
-  simplified.mesh = DecimateMesh(model.mesh, request.max_render_triangles,
-                                 request.max_simplification_error_mm);
+  simplified.mesh =
+      DecimateMesh(model.mesh, request.max_render_triangles, request.max_simplification_error_mm);
   LogInfo("rendering a simplified mesh: " + std::to_string(simplified.mesh.n_faces()) + " of " +
           std::to_string(model.mesh.n_faces()) + " triangles");
   return ToRenderMesh(simplified);
@@ -143,18 +155,37 @@ void TrainingRequest::Validate() const {
   }
 }
 
-std::size_t TrainingPlan::EstimatedBytes(const FeatureOptions& features) const {
+std::size_t EstimatedTemplateBytes(std::size_t templates, const FeatureOptions& features) {
   const std::size_t features_per_template =
       static_cast<std::size_t>(features.color_features + features.normal_features) * 2;
-  return TemplateCount() * (sizeof(TemplateRecord) + 64 + features_per_template * sizeof(Feature));
+  const std::size_t per_template =
+      sizeof(TemplateRecord) + 64 + features_per_template * sizeof(Feature);
+  if (templates > std::numeric_limits<std::size_t>::max() / per_template) {
+    return std::numeric_limits<std::size_t>::max();  // saturate: only compared with a limit
+  }
+  return templates * per_template;
+}
+
+std::size_t TrainingPlan::EstimatedBytes(const FeatureOptions& features) const {
+  return EstimatedTemplateBytes(TemplateCount(), features);
+}
+
+std::size_t TrainingMemoryLimitBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return kMaxTrainingBytes;
+  return std::min(kMaxTrainingBytes,
+                  static_cast<std::size_t>(pages) * static_cast<std::size_t>(page_size) / 3);
 }
 
 TrainingPlan PlanTraining(const Model& model, const TrainingRequest& request) {
   request.Validate();
   TrainingPlan plan;
   plan.radius_mm = model.sphere.radius;
-  plan.layer_depths_mm = DepthLayers(request.profile.depth_min_mm, request.profile.depth_max_mm,
-                                     model.sphere.radius);
+  plan.layer_depths_mm =
+      DepthLayers(request.profile.depth_min_mm, request.profile.depth_max_mm, model.sphere.radius);
+  RefuseOversizedRun(CountViews(request.profile.views) * plan.layer_depths_mm.size(),
+                     request.profile.features);
   plan.views = SampleViews(request.profile.views);
   if (plan.views.empty()) throw Error("views: the view ranges produce no view");
   if (plan.layer_depths_mm.front() <= model.sphere.radius) {
@@ -168,16 +199,11 @@ TrainingResult TrainTemplates(const Model& model, const TrainingRequest& request
   const auto start = std::chrono::steady_clock::now();
   const TrainingPlan plan = PlanTraining(model, request);
   const std::size_t count = plan.TemplateCount();
-  if (count > 0xFFFFFFFFu || plan.EstimatedBytes(request.profile.features) > kMaxArchiveBytes) {
-    throw Error("training: " + std::to_string(count) + " templates would need about " +
-                std::to_string(plan.EstimatedBytes(request.profile.features) >> 20) +
-                " MiB; reduce the depth range or the view sampling");
-  }
   const RenderMesh mesh = RenderMeshFor(model, request);
   const Eigen::Vector3d bbox_size = model.bbox_max - model.bbox_min;
-  const TemplateContext context{mesh, model, request,
-                                request.profile.features.depth_edge_fraction *
-                                    static_cast<float>(bbox_size.maxCoeff())};
+  const TemplateContext context{
+      mesh, model, request,
+      request.profile.features.depth_edge_fraction * static_cast<float>(bbox_size.maxCoeff())};
   std::vector<TemplateRecord> templates(count);
   std::atomic<std::size_t> done{0};
   const std::size_t view_count = plan.views.size();

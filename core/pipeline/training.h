@@ -38,6 +38,13 @@ struct TrainingPlan {
   std::size_t EstimatedBytes(const FeatureOptions& features) const;
 };
 
+// Rough memory `templates` templates take in RAM (bytes).
+std::size_t EstimatedTemplateBytes(std::size_t templates, const FeatureOptions& features);
+
+// The most a training run may allocate for its templates on this machine: a third of physical
+// memory (the archive is serialised once more while it is written), at most 8 GiB.
+std::size_t TrainingMemoryLimitBytes();
+
 struct TrainingSummary {
   double radius_mm = 0.0;
   int layers = 0;
@@ -52,7 +59,8 @@ struct TrainingResult {
   TrainingSummary summary;
 };
 
-// Layers and views for `model` under `request` (cheap; the studio shows it live).
+// Layers and views for `model` under `request` (cheap; the studio shows it live). Throws Error
+// before sampling anything when the run would need more than TrainingMemoryLimitBytes().
 TrainingPlan PlanTraining(const Model& model, const TrainingRequest& request);
 
 // Renders every view at every depth layer and extracts its LineMOD template, in parallel.

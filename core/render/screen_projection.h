@@ -86,8 +86,10 @@ class ScreenProjection {
   std::uint32_t Outcode(const Eigen::Vector3f& point, float u, float v) const {
     constexpr float kMax = std::numeric_limits<float>::max();
     // Arithmetic on comparison results rather than branches: the per-vertex loop stays branch-free.
-    const std::uint32_t finite = (std::abs(point.x()) <= kMax) & (std::abs(point.y()) <= kMax) &
-                                 (std::abs(point.z()) <= kMax);
+    const auto bit = [](bool value) { return static_cast<std::uint32_t>(value); };
+    const std::uint32_t finite = bit(std::abs(point.x()) <= kMax) &
+                                 bit(std::abs(point.y()) <= kMax) &
+                                 bit(std::abs(point.z()) <= kMax);
     const std::uint32_t in_front = point.z() > near_mm_;
     const std::uint32_t sides = kOutsideLeft * (u < -guard_) | kOutsideRight * (u > right_) |
                                 kOutsideTop * (v < -guard_) | kOutsideBottom * (v > bottom_);

@@ -36,6 +36,32 @@ TEST(ViewsTest, GridCountIsProductOfRanges) {
   EXPECT_EQ(SampleViews(options).size(), 24u * 6u * 7u);
 }
 
+TEST(ViewsTest, CountViewsMatchesTheSampledViews) {
+  ViewSamplingOptions grid;
+  grid.azimuth = {0, 20, 340};
+  grid.elevation = {15, 15, 75};
+  grid.roll = {-20, 20, 20};
+  EXPECT_EQ(CountViews(grid), SampleViews(grid).size());
+  ViewSamplingOptions even = grid;
+  even.even_spacing_deg = 7.5;
+  EXPECT_EQ(CountViews(even), SampleViews(even).size());
+  EXPECT_EQ(AngleRange({0, 0.1, 0.3}).Count(), 4u);  // inclusive despite rounding
+}
+
+TEST(ViewsTest, HugeGridsAreRefusedBeforeSampling) {
+  ViewSamplingOptions options;
+  options.azimuth = {0, 0.004, 359};
+  options.elevation = {0, 0.001, 90};
+  options.roll = {-45, 0.001, 45};
+  EXPECT_EQ(CountViews(options), std::size_t{89751} * 90001 * 90001);
+  try {
+    SampleViews(options);
+    FAIL() << "a grid of 7e14 views was sampled";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("use larger angle steps"));
+  }
+}
+
 TEST(ViewsTest, EvenSamplingStaysInElevationRangeAndIsRoughlyUniform) {
   ViewSamplingOptions options;
   options.elevation = {0, 1, 90};

@@ -2,6 +2,7 @@
 // Integration: train the bundled sample, write the archive, read it back, compare.
 #include "pipeline/training.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "support/test_paths.h"
@@ -129,6 +130,24 @@ TEST(TrainingTest, RejectsBadRequests) {
   request = TinyRequest();
   request.profile.views.roll.step_deg = 0.0;
   EXPECT_THROW(PlanTraining(SampleModel(), request), Error);
+}
+
+TEST(TrainingTest, RunsTooLargeForMemoryAreRefusedUpFrontWithTheEstimate) {
+  TrainingRequest request = TinyRequest();
+  request.profile.depth_min_mm = 300.0;
+  request.profile.depth_max_mm = 30000.0;  // 437 layers for the bracket
+  request.profile.views.azimuth = {0.0, 0.1, 359.9};
+  request.profile.views.elevation = {0.0, 0.1, 90.0};
+  request.profile.views.roll = {-45.0, 1.0, 45.0};
+  try {
+    PlanTraining(SampleModel(), request);
+    FAIL() << "a run of 10^11 templates was planned";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("MiB of memory"));
+    EXPECT_THAT(error.what(), ::testing::HasSubstr("reduce the depth range or the view sampling"));
+  }
+  EXPECT_LE(TrainingMemoryLimitBytes(), std::size_t{8} << 30);
+  EXPECT_GT(TrainingMemoryLimitBytes(), std::size_t{0});
 }
 
 }  // namespace
