@@ -17,6 +17,7 @@ seeds="$work/seeds"
 mkdir -p "$work"
 build-asan/tests/fuzz/layermod_fuzz_seeds "$seeds" ../shared/data > /dev/null
 
+export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0"
 status=0
 for target in "${targets[@]}"; do
   corpus="$work/corpus/$target"
@@ -33,7 +34,7 @@ for target in "${targets[@]}"; do
     result="FAILED (see $log and $findings)"
     status=1
   fi
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | tail -1 | grep -o '[0-9]*$' || echo "?")
   coverage=$(grep -o 'cov: [0-9]*' "$log" | tail -1 || true)
   echo "fuzz $target: $runs executions in ${seconds}s, $coverage, $result"
 done

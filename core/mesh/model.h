@@ -13,6 +13,7 @@
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -37,6 +38,10 @@ struct LoadModelOptions {
   LengthUnit units = LengthUnit::kMillimetre;  // units of the file; converted to mm on load
   // Larger meshes are refused (decimate them first): they would make training crawl.
   std::size_t max_triangles = 20'000'000;
+  // The file is read in a child process, so that a reader crash or hang on a hostile file is an
+  // error, not the end of the program (see MeshImportOptions).
+  bool isolate_import = true;
+  std::chrono::seconds import_timeout{300};
 
   void Validate() const;  // throws Error
 };

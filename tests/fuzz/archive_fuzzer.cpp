@@ -12,6 +12,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace layermod;
+  fuzz::QuietLogsOnce();
   const std::string name = "fuzz-input.layermod";
   try {
     const TemplateArchive archive = ReadArchiveBytes(fuzz::AsText(data, size), name);

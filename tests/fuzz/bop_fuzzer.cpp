@@ -47,6 +47,7 @@ void ExpectNamedFile(const layermod::Error& error) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace layermod;
+  fuzz::QuietLogsOnce();
   fuzz::ClearScratchDir();
   const auto parts = fuzz::SplitParts(fuzz::AsText(data, size), 6);
   try {

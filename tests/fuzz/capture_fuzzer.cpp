@@ -34,6 +34,7 @@ void CheckLoadedCapture(const layermod::Capture& capture) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace layermod;
+  fuzz::QuietLogsOnce();
   fuzz::ClearScratchDir();
   const auto parts = fuzz::SplitParts(fuzz::AsText(data, size), 3);
   CaptureFiles files;

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "util/log.h"
+
 namespace layermod::fuzz {
 namespace fs = std::filesystem;
 
@@ -29,6 +31,14 @@ std::string JoinParts(const std::vector<std::string>& parts) {
     joined += parts[i];
   }
   return joined;
+}
+
+void QuietLogsOnce() {
+  static const bool quiet = [] {
+    SetLogSink([](LogLevel, std::string_view) {});
+    return true;
+  }();
+  (void)quiet;
 }
 
 const fs::path& ScratchDir() {

@@ -22,6 +22,10 @@ std::vector<std::string_view> SplitParts(std::string_view bytes, std::size_t cou
 // Joins files into one input, the inverse of SplitParts (for making seeds).
 std::string JoinParts(const std::vector<std::string>& parts);
 
+// Call first in every target: drops the core's log messages (warnings about fuzzed meshes would
+// otherwise flood the output and slow the run) once per process.
+void QuietLogsOnce();
+
 // A per-process scratch directory, emptied before each input.
 const std::filesystem::path& ScratchDir();
 void ClearScratchDir();

@@ -30,6 +30,7 @@ void CheckLoadedModel(const layermod::Model& model) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace layermod;
+  fuzz::QuietLogsOnce();
   if (size == 0) return 0;
   static constexpr std::array<const char*, 4> kExtensions = {"ply", "stl", "obj", "off"};
   fuzz::ClearScratchDir();

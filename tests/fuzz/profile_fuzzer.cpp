@@ -16,6 +16,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace layermod;
+  fuzz::QuietLogsOnce();
   const auto path = fuzz::WriteScratchFile("profile.json", fuzz::AsText(data, size));
   TrainingProfile profile;
   try {

@@ -277,7 +277,7 @@ TEST_F(ModelTest, RefusesMeshesAboveTheTriangleLimit) {
   options.max_triangles = 11;
   const auto path = Write("cube.ply", test::CubePly(10));
   EXPECT_THAT(ThrownMessage<FormatError>([&] { LoadModel(path, options); }),
-              HasSubstr("12 triangles, more than the limit of 11"));
+              HasSubstr("12 faces, more than the limit of 11 triangles"));
   options.max_triangles = 12;
   EXPECT_EQ(LoadModel(path, options).mesh.n_faces(), 12u);
   EXPECT_EQ(LoadModelOptions{}.max_triangles, 20'000'000u);

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+#include "mesh/mesh_import.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "mesh_files.h"
+#include "support/test_paths.h"
+#include "util/error.h"
+
+namespace layermod {
+namespace {
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+template <typename E, typename F>
+std::string ThrownMessage(F&& call) {
+  try {
+    call();
+  } catch (const E& error) {
+    return error.what();
+  }
+  return "(nothing thrown)";
+}
+
+fs::path WriteFile(const test::TempDir& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir / name, std::ios::binary) << text;
+  return dir / name;
+}
+
+TEST(MeshImportTest, IsolatedAndInProcessImportsAgree) {
+  test::TempDir dir;
+  const fs::path path = WriteFile(dir, "cube.ply", test::CubePly(10));
+  MeshImportOptions in_process;
+  in_process.isolate = false;
+  const TriangleSoup a = ImportTriangles(path, {});
+  const TriangleSoup b = ImportTriangles(path, in_process);
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.colors, b.colors);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.triangles.size(), 12u);
+  EXPECT_EQ(a.positions.size(), 8u);
+}
+
+TEST(MeshImportTest, SoupRoundTripsAndBrokenBytesAreRejected) {
+  TriangleSoup soup;
+  soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  soup.colors = {{{1, 2, 3}}, {{4, 5, 6}}, {{7, 8, 9}}};
+  soup.triangles = {{0, 1, 2}};
+  soup.has_colors = true;
+  const std::string bytes = SerializeSoup(soup);
+  const TriangleSoup back = ParseSoup(bytes, "m.ply");
+  EXPECT_EQ(back.positions, soup.positions);
+  EXPECT_EQ(back.colors, soup.colors);
+  EXPECT_EQ(back.triangles, soup.triangles);
+  EXPECT_TRUE(back.has_colors);
+  EXPECT_THROW(ParseSoup(bytes.substr(0, bytes.size() - 1), "m.ply"), FormatError);
+  EXPECT_THROW(ParseSoup("", "m.ply"), FormatError);
+  std::string bad_index = bytes;
+  bad_index[bad_index.size() - 4] = 9;  // last index of the triangle -> 9, out of range
+  EXPECT_THAT(ThrownMessage<FormatError>([&] { ParseSoup(bad_index, "m.ply"); }),
+              HasSubstr("out-of-range vertex index"));
+}
+
+TEST(MeshImportTest, AnImporterCrashIsAFormatErrorNamingTheFile) {
+  // Found by the mesh fuzz target: assimp's OFF reader dies on this file.
+  const fs::path path = test::SourceDir() / "tests/fuzz/regressions/mesh/assimp-off-crash.off";
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(bytes.empty());
+  test::TempDir dir;
+  const fs::path off = WriteFile(dir, "part.off", bytes.substr(1));  // byte 0 picks the format
+  const std::string message = ThrownMessage<FormatError>([&] { ImportTriangles(off, {}); });
+  EXPECT_THAT(message, HasSubstr("'" + off.string() + "': the mesh importer crashed"));
+}
+
+TEST(MeshImportTest, PlyWithoutEndHeaderIsRefusedBeforeAssimpLoopsOnIt) {
+  test::TempDir dir;
+  const fs::path path = WriteFile(
+      dir, "open.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n0 0 0\n");
+  EXPECT_THAT(ThrownMessage<FormatError>([&] { ImportTriangles(path, {}); }),
+              HasSubstr("no end_header"));
+}
+
+TEST(MeshImportTest, PlyHeadersAreCheckedForKeywordsTypesAndSizes) {
+  test::TempDir dir;
+  const std::string head = "ply\nformat binary_little_endian 1.0\n";
+  const auto message = [&](const std::string& text) {
+    return ThrownMessage<FormatError>([&] { ImportTriangles(WriteFile(dir, "h.ply", text), {}); });
+  };
+  EXPECT_THAT(message(head + "elephant 3\nend_header\n"), HasSubstr("unknown PLY header keyword"));
+  EXPECT_THAT(message(head + "element vertex 3\nproperty quad x\nend_header\n"),
+              HasSubstr("unknown PLY property type"));
+  EXPECT_THAT(message("ply\nformat ascii 2.0\nend_header\n"), HasSubstr("unsupported PLY version"));
+  EXPECT_THAT(message(head + "element vertex 1000000000\nproperty float x\nend_header\n"),
+              HasSubstr("declares more data than the file holds"));
+  MeshImportOptions options;
+  options.max_triangles = 10;
+  EXPECT_THAT(ThrownMessage<FormatError>([&] {
+                ImportTriangles(WriteFile(dir, "f.ply",
+                                          head + "element face 11\nproperty list uchar int "
+                                                 "vertex_indices\nend_header\n"),
+                                options);
+              }),
+              HasSubstr("declares 11 faces"));
+}
+
+}  // namespace
+}  // namespace layermod
