@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Runs every libFuzzer target of ./build-asan (made by packaging/build-sanitize.sh) for a bounded
-# time: bash packaging/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
+# time: bash packaging/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]. The mutation seed is fixed
+# (FUZZ_SEED, default 1), so a short CI run retraces the start of a longer local run.
 # Each target starts from the project's seed corpus plus the committed regression inputs and
 # keeps its grown corpus in build-asan/fuzz/corpus/<target>. A crash, leak, timeout or
 # sanitizer report stops with a non-zero exit; the input is kept in build-asan/fuzz/findings/.
@@ -26,7 +27,8 @@ for target in "${targets[@]}"; do
   inputs=("$corpus" "$seeds/$target")
   [ -d "tests/fuzz/regressions/$target" ] && inputs+=("tests/fuzz/regressions/$target")
   log="$work/$target.log"
-  if build-asan/tests/fuzz/layermod_fuzz_"$target" -max_total_time="$seconds" -timeout=20 \
+  if build-asan/tests/fuzz/layermod_fuzz_"$target" -seed="${FUZZ_SEED:-1}" \
+      -max_total_time="$seconds" -timeout=20 \
       -rss_limit_mb=4096 -max_len=262144 -print_final_stats=1 \
       -artifact_prefix="$findings/" "${inputs[@]}" > "$log" 2>&1; then
     result="ok"

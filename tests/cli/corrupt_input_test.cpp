@@ -248,7 +248,7 @@ TEST_F(CorruptInputTest, BrokenMeshesFailCleanly) {
       {"zero-area.ply", AsciiPly("0 0 0\n10 0 0\n20 0 0\n", 3, "3 0 1 2\n3 0 0 1\n", 2)},
       {"bad-index.ply", AsciiPly("0 0 0\n10 0 0\n0 10 0\n", 3, "3 0 1 7\n", 1)},
       {"no-faces.stl", "solid x\nendsolid x\n"},
-      {"garbage.obj", std::string("\x7f\x45\x4c\x46 binary junk \x01\x02\x03", 23)},
+      {"garbage.obj", std::string("\x7f" "ELF binary junk \x01\x02\x03")},
   };
   for (const auto& [name, content] : meshes) {
     WriteFileAtomically(Path(name), content);
