@@ -11,14 +11,16 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <unordered_map>
 #include <utility>
 
 #include "mesh/ply_header.h"
 #include "util/error.h"
-#include "util/isolated_call.h"
+#include "util/log.h"
 #include "util/quoted.h"
+#include "util/subprocess.h"
 
 namespace layermod {
 namespace fs = std::filesystem;
@@ -180,6 +182,32 @@ void ReadRaw(const std::string& bytes, std::size_t& offset, T* data, std::size_t
   offset += count * sizeof(T);
 }
 
+std::string LastLine(std::string text) {
+  while (!text.empty() && text.back() == '\n') text.pop_back();
+  const auto newline = text.rfind('\n');
+  return newline == std::string::npos ? text : text.substr(newline + 1);
+}
+
+TriangleSoup SoupFromImporter(const ProcessResult& run, const fs::path& path,
+                              const MeshImportOptions& options) {
+  const std::string prefix = Quoted(path) + ": the mesh importer";
+  if (run.timed_out) {
+    throw FormatError(prefix + " took longer than " + std::to_string(options.timeout.count()) +
+                      " s on this file and was stopped; it is malformed or far too large");
+  }
+  if (run.signal_number != 0 || (run.exit_code != 0 && LastLine(run.err).empty()) ||
+      run.exit_code == 1 || run.exit_code > kImporterError) {
+    const std::string how = run.signal_number != 0 ? "signal " + std::to_string(run.signal_number)
+                                                   : "exit status " + std::to_string(run.exit_code);
+    throw FormatError(prefix + " crashed (" + how +
+                      ") on this file; it is malformed or uses a variant that cannot be read");
+  }
+  if (run.exit_code == kImporterFormatError) throw FormatError(LastLine(run.err));
+  if (run.exit_code == kImporterIoError) throw IoError(LastLine(run.err));
+  if (run.exit_code == kImporterError) throw Error(LastLine(run.err));
+  return ParseSoup(run.out, path.string());
+}
+
 }  // namespace
 
 std::string SerializeSoup(const TriangleSoup& soup) {
@@ -224,13 +252,40 @@ TriangleSoup ParseSoup(const std::string& bytes, const std::string& name) {
   return soup;
 }
 
+fs::path MeshImporterPath() {
+  if (const char* env = std::getenv(kMeshImporterEnv); env != nullptr && *env != '\0') return env;
+  std::error_code ec;
+  const fs::path self_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  for (const fs::path& candidate :
+       {self_dir / kMeshImporterName, self_dir / ".." / "libexec" / "layermod" / kMeshImporterName,
+        fs::path(LAYERMOD_IMPORTER_BUILD_PATH), fs::path(LAYERMOD_IMPORTER_INSTALL_PATH)}) {
+    if (!ec && fs::is_regular_file(candidate)) return candidate;
+  }
+  return {};
+}
+
 TriangleSoup ImportTriangles(const fs::path& path, const MeshImportOptions& options) {
+  if (!fs::is_regular_file(path)) throw IoError(Quoted(path) + ": no such file");
   CheckPlyHeader(path, options.max_triangles);
-  if (!options.isolate) return ImportInProcess(path, options);
-  const std::string bytes =
-      RunIsolated([&] { return SerializeSoup(ImportInProcess(path, options)); }, options.timeout,
-                  Quoted(path) + ": the mesh importer");
-  return ParseSoup(bytes, path.string());
+  const fs::path importer = options.isolate ? MeshImporterPath() : fs::path();
+  if (importer.empty()) {
+    if (options.isolate) {
+      LogWarning(std::string(kMeshImporterName) + " not found (set " + kMeshImporterEnv +
+                 "); reading " + Quoted(path) + " in this process");
+    }
+    return ImportInProcess(path, options);
+  }
+  const ProcessResult run =
+      RunProcess({importer.string(), "--units", options.units == LengthUnit::kMetre ? "m" : "mm",
+                  "--max-triangles", std::to_string(options.max_triangles), "--", path.string()},
+                 options.timeout);
+  return SoupFromImporter(run, path, options);
+}
+
+int ImporterExitCode(const Error& error) {
+  if (dynamic_cast<const FormatError*>(&error) != nullptr) return kImporterFormatError;
+  if (dynamic_cast<const IoError*>(&error) != nullptr) return kImporterIoError;
+  return kImporterError;
 }
 
 }  // namespace layermod

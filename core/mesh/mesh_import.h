@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/units.h"
+#include "util/error.h"
 
 namespace layermod {
 
@@ -24,14 +25,29 @@ struct TriangleSoup {
 struct MeshImportOptions {
   LengthUnit units = LengthUnit::kMillimetre;
   std::size_t max_triangles = 20'000'000;
-  // assimp runs in a child process: a reader that crashes or hangs on a hostile file becomes a
-  // FormatError instead of taking the caller down. Off only for debugging the reader in-process.
+  // assimp runs in its own process (the layermod-import-mesh helper): a reader that crashes or
+  // hangs on a hostile file becomes a FormatError instead of taking the caller down. Off for the
+  // helper itself and for debugging the reader in-process.
   bool isolate = true;
   std::chrono::seconds timeout{300};
 };
 
+// The helper executable that imports in its own process, and how it is found: the environment
+// variable, then beside the running executable, then in ../libexec/layermod/ from it (installed
+// layout), then where the build put it and where it installs it.
+inline constexpr char kMeshImporterName[] = "layermod-import-mesh";
+inline constexpr char kMeshImporterEnv[] = "LAYERMOD_MESH_IMPORTER";
+std::filesystem::path MeshImporterPath();  // empty when not found
+
+// Exit codes of the helper for each error type (1 is left to crashes reported by a sanitizer).
+inline constexpr int kImporterFormatError = 2;
+inline constexpr int kImporterIoError = 3;
+inline constexpr int kImporterError = 4;
+int ImporterExitCode(const Error& error);
+
 // Reads any mesh assimp reads, with every node transform applied, vertices at equal positions
-// merged, and converted to mm. Throws IoError/FormatError naming the file.
+// merged, and converted to mm. Throws IoError/FormatError naming the file. When isolated but the
+// helper is not found, logs a warning and reads in this process.
 TriangleSoup ImportTriangles(const std::filesystem::path& path, const MeshImportOptions& options);
 
 // The soup as bytes and back (how the child process hands it over). Parsing validates sizes

@@ -44,6 +44,21 @@ TEST(MeshImportTest, IsolatedAndInProcessImportsAgree) {
   EXPECT_EQ(a.positions.size(), 8u);
 }
 
+TEST(MeshImportTest, TheHelperIsFoundInTheBuildTree) {
+  const fs::path importer = MeshImporterPath();
+  ASSERT_FALSE(importer.empty());
+  EXPECT_EQ(importer.filename(), kMeshImporterName);
+}
+
+TEST(MeshImportTest, HelperErrorsKeepTheirTypeAndMessage) {
+  test::TempDir dir;
+  EXPECT_THAT(ThrownMessage<IoError>([&] { ImportTriangles(dir / "missing.ply", {}); }),
+              HasSubstr("missing.ply"));
+  const fs::path garbage = WriteFile(dir, "garbage.stl", "solid x\nendsolid x\n");
+  EXPECT_THAT(ThrownMessage<FormatError>([&] { ImportTriangles(garbage, {}); }),
+              HasSubstr("'" + garbage.string() + "'"));
+}
+
 TEST(MeshImportTest, SoupRoundTripsAndBrokenBytesAreRejected) {
   TriangleSoup soup;
   soup.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
