@@ -8,6 +8,7 @@
 #include "dataset/bop.h"
 #include "support/matchers.h"
 #include "support/test_paths.h"
+#include "support/thrown.h"
 #include "util/error.h"
 
 namespace layermod {
@@ -17,16 +18,7 @@ namespace fs = std::filesystem;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-// The exception's message, or "" when `call` does not throw an `E`.
-template <typename E, typename F>
-std::string ThrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::ThrownMessage;
 
 std::optional<fs::path> LmoDev() {
   const auto data = test::SharedDataDir();

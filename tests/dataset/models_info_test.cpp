@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "dataset/models_info.h"
+#include "support/thrown.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -19,15 +20,7 @@ using test::MatrixNear;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-template <typename E, typename F>
-std::string ThrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::ThrownMessage;
 
 TEST(ModelsInfoTest, ReadsTheRealLineModModels) {
   const auto data = test::SharedDataDir();

@@ -25,10 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (in_layers != all.size()) std::abort();  // the index must partition the templates
     }
   } catch (const Error& error) {
-    if (std::string(error.what()).find(name) == std::string::npos) {
-      std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
-      std::abort();
-    }
+    fuzz::AbortUnlessNamed(error, name);
   }
   return 0;
 }

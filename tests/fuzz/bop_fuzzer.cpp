@@ -36,13 +36,6 @@ void LoadSceneAndFirstFrame(const std::vector<std::string_view>& parts) {
   LoadBopFrame(with_images, with_images.image_ids.front());
 }
 
-void ExpectNamedFile(const layermod::Error& error) {
-  if (std::string(error.what()).find(layermod::fuzz::ScratchDir().string()) == std::string::npos) {
-    std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
-    std::abort();
-  }
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -53,12 +46,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     LoadSceneAndFirstFrame(parts);
   } catch (const Error& error) {
-    ExpectNamedFile(error);
+    fuzz::AbortUnlessNamed(error, fuzz::ScratchDir().string());
   }
   try {
     LoadModelsInfo(fuzz::WriteScratchFile("models/models_info.json", parts[3]));
   } catch (const Error& error) {
-    ExpectNamedFile(error);
+    fuzz::AbortUnlessNamed(error, fuzz::ScratchDir().string());
   }
   return 0;
 }

@@ -44,10 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     CheckLoadedCapture(LoadCapture(files));
   } catch (const Error& error) {
-    if (std::string(error.what()).find(fuzz::ScratchDir().string()) == std::string::npos) {
-      std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
-      std::abort();
-    }
+    fuzz::AbortUnlessNamed(error, fuzz::ScratchDir().string());
   }
   return 0;
 }

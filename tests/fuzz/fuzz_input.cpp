@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
@@ -54,6 +56,12 @@ const fs::path& ScratchDir() {
 
 void ClearScratchDir() {
   for (const auto& entry : fs::directory_iterator(ScratchDir())) fs::remove_all(entry.path());
+}
+
+void AbortUnlessNamed(const std::exception& error, const std::string& name) {
+  if (std::string(error.what()).find(name) != std::string::npos) return;
+  std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
+  std::abort();
 }
 
 fs::path WriteScratchFile(const std::string& name, std::string_view bytes) {

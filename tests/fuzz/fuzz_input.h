@@ -33,6 +33,10 @@ void ClearScratchDir();
 // Writes `bytes` to ScratchDir()/name and returns the path.
 std::filesystem::path WriteScratchFile(const std::string& name, std::string_view bytes);
 
+// The fuzzing contract for a refused input: its message must name the file (`name` is a path or
+// a file name that the message must contain); aborts (a finding) otherwise.
+void AbortUnlessNamed(const std::exception& error, const std::string& name);
+
 inline std::string_view AsText(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
 }

@@ -44,10 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     RecentreOnSphere(model);
     ToRenderMesh(model);
   } catch (const Error& error) {
-    if (std::string(error.what()).find(path.string()) == std::string::npos) {
-      std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
-      std::abort();
-    }
+    fuzz::AbortUnlessNamed(error, path.string());
   }
   return 0;
 }

@@ -22,10 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     profile = LoadTrainingProfile(path);
   } catch (const Error& error) {
-    if (std::string(error.what()).find(path.string()) == std::string::npos) {
-      std::fprintf(stderr, "error message does not name the file: %s\n", error.what());
-      std::abort();
-    }
+    fuzz::AbortUnlessNamed(error, path.string());
     return 0;
   }
   profile.Validate();  // throws (a finding) if loading let an invalid profile through

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "mesh/mesh_import.h"
+#include "support/thrown.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,15 +16,7 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-template <typename E, typename F>
-std::string ThrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "(nothing thrown)";
-}
+using test::ThrownMessage;
 
 fs::path WriteFile(const test::TempDir& dir, const std::string& name, const std::string& text) {
   std::ofstream(dir / name, std::ios::binary) << text;

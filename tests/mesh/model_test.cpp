@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "mesh/model.h"
+#include "support/thrown.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -33,16 +34,7 @@ std::string InQuotes(const std::filesystem::path& path) {
   return quoted;
 }
 
-// The exception's message, or "" when `load` does not throw an `E`.
-template <typename E, typename F>
-std::string ThrownMessage(F&& load) {
-  try {
-    load();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::ThrownMessage;
 
 class ModelTest : public ::testing::Test {
  protected:

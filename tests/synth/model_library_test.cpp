@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "synth/model_library.h"
+#include "support/thrown.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -16,15 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-template <typename E, typename F>
-std::string ThrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::ThrownMessage;
 
 TEST(ModelLibraryTest, ListsBopModelFilesById) {
   test::TempDir dir;

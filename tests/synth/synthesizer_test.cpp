@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "synth/synthesizer.h"
+#include "support/thrown.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -23,15 +24,7 @@ namespace fs = std::filesystem;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
-template <typename E, typename F>
-std::string ThrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::ThrownMessage;
 
 // Frames of the bracket (always) and, with the shared data, of the ape and the duck among each
 // other, generated once for the frame-level tests.
