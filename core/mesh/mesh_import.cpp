@@ -10,6 +10,7 @@
 #include <assimp/Importer.hpp>
 #include <bit>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -194,6 +195,9 @@ TriangleSoup SoupFromImporter(const ProcessResult& run, const fs::path& path,
   if (run.timed_out) {
     throw FormatError(prefix + " took longer than " + std::to_string(options.timeout.count()) +
                       " s on this file and was stopped; it is malformed or far too large");
+  }
+  if (run.signal_number == SIGINT || run.signal_number == SIGTERM || run.signal_number == SIGHUP) {
+    throw Error(prefix + " was interrupted (signal " + std::to_string(run.signal_number) + ")");
   }
   if (run.signal_number != 0 || (run.exit_code != 0 && LastLine(run.err).empty()) ||
       run.exit_code == 1 || run.exit_code > kImporterError) {
