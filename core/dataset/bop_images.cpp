@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "dataset/bop_images.h"
+#include "dataset/image_header.h"
 
 #include <cmath>
 #include <opencv2/imgcodecs.hpp>
@@ -21,6 +22,7 @@ cv::Mat DecodeFile(const fs::path& path, int flags) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw IoError(Quoted(path) + ": image is missing");
   const std::string bytes = ReadFileBytes(path);
+  CheckDeclaredImageSize(path, bytes, std::nullopt, "");
   const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
   cv::Mat image;
   try {

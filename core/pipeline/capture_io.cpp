@@ -1,22 +1,29 @@
 // SPDX-License-Identifier: MIT
-#include "util/quoted.h"
 #include "pipeline/capture_io.h"
+#include "util/quoted.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
 
+#include "dataset/image_header.h"
+#include "util/atomic_file.h"
 #include "util/error.h"
 
 namespace layermod {
 namespace {
 
-cv::Mat ReadImage(const std::filesystem::path& path, int flags) {
+// The header is checked against the camera before decoding: a header can declare any size.
+cv::Mat ReadImage(const std::filesystem::path& path, int flags, const CaptureFiles& files,
+                  const PinholeCamera& camera) {
   if (!std::filesystem::is_regular_file(path)) throw IoError(Quoted(path) + ": no such file");
+  const std::string bytes = ReadFileBytes(path);
+  CheckDeclaredImageSize(path, bytes, cv::Size(camera.width, camera.height), Quoted(files.camera));
   cv::Mat image;
   try {
-    image = cv::imread(path.string(), flags);
+    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
+    image = cv::imdecode(buffer, flags);
   } catch (const cv::Exception&) {
     image.release();
   }
@@ -24,8 +31,9 @@ cv::Mat ReadImage(const std::filesystem::path& path, int flags) {
   return image;
 }
 
-cv::Mat LoadColor(const std::filesystem::path& path) {
-  cv::Mat image = ReadImage(path, cv::IMREAD_UNCHANGED);
+cv::Mat LoadColor(const CaptureFiles& files, const PinholeCamera& camera) {
+  const std::filesystem::path& path = files.color;
+  cv::Mat image = ReadImage(path, cv::IMREAD_UNCHANGED, files, camera);
   if (image.depth() != CV_8U) {
     throw FormatError(Quoted(path) + ": colour image must have 8 bits per channel");
   }
@@ -35,8 +43,9 @@ cv::Mat LoadColor(const std::filesystem::path& path) {
   return image;
 }
 
-cv::Mat LoadDepth(const CaptureFiles& files) {
-  const cv::Mat raw = ReadImage(files.depth, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
+cv::Mat LoadDepth(const CaptureFiles& files, const PinholeCamera& camera) {
+  const cv::Mat raw =
+      ReadImage(files.depth, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR, files, camera);
   if (raw.channels() != 1) throw FormatError(Quoted(files.depth) + ": depth must have 1 channel");
   cv::Mat depth_mm;
   if (raw.depth() == CV_16U) {
@@ -66,7 +75,7 @@ Capture LoadCapture(const CaptureFiles& files) {
   }
   Capture capture;
   capture.camera = LoadCameraJson(files.camera);
-  capture.color = LoadColor(files.color);
+  capture.color = LoadColor(files, capture.camera);
   if (capture.color.cols != capture.camera.width || capture.color.rows != capture.camera.height) {
     throw FormatError(Quoted(files.color) + ": image is " + std::to_string(capture.color.cols) +
                       "x" + std::to_string(capture.color.rows) + " but " + Quoted(files.camera) +
@@ -74,11 +83,12 @@ Capture LoadCapture(const CaptureFiles& files) {
                       std::to_string(capture.camera.height));
   }
   if (!files.depth.empty()) {
-    capture.depth_mm = LoadDepth(files);
+    capture.depth_mm = LoadDepth(files, capture.camera);
     if (capture.depth_mm.size() != capture.color.size()) {
-      throw FormatError(Quoted(files.depth) + ": depth is " + std::to_string(capture.depth_mm.cols) +
-                        "x" + std::to_string(capture.depth_mm.rows) + ", colour is " +
-                        std::to_string(capture.color.cols) + "x" + std::to_string(capture.color.rows));
+      throw FormatError(
+          Quoted(files.depth) + ": depth is " + std::to_string(capture.depth_mm.cols) + "x" +
+          std::to_string(capture.depth_mm.rows) + ", colour is " +
+          std::to_string(capture.color.cols) + "x" + std::to_string(capture.color.rows));
     }
   }
   return capture;

@@ -166,9 +166,13 @@ TEST_F(CorruptInputTest, BrokenCaptureImagesFailCleanly) {
   const std::string png = ReadFileBytes(Path("depth.png"));
   WriteFileAtomically(Path("depth-truncated.png"), png.substr(0, png.size() / 3));
   WriteFileAtomically(Path("depth-empty.png"), "");
+  std::string huge = png;  // IHDR declares 2^31-1 x 2^31-1 pixels: refused before decoding
+  for (std::size_t i = 16; i < 24; ++i) huge[i] = i % 4 == 0 ? '\x7f' : '\xff';
+  WriteFileAtomically(Path("depth-huge-header.png"), huge);
 
-  for (const char* name : {"depth-8bit.png", "depth-small.png", "depth-zero.png", "depth-nan.tiff",
-                           "depth-truncated.png", "depth-empty.png", "missing-depth.png"}) {
+  for (const char* name :
+       {"depth-8bit.png", "depth-small.png", "depth-zero.png", "depth-nan.tiff",
+        "depth-truncated.png", "depth-empty.png", "depth-huge-header.png", "missing-depth.png"}) {
     ExpectCleanFailure(Detect(Path("color.png"), Path(name), camera), Path(name), Path("det.json"));
   }
   for (const char* name : {"color-small.png", "depth-truncated.png", "missing-color.png"}) {
@@ -248,7 +252,8 @@ TEST_F(CorruptInputTest, BrokenMeshesFailCleanly) {
       {"zero-area.ply", AsciiPly("0 0 0\n10 0 0\n20 0 0\n", 3, "3 0 1 2\n3 0 0 1\n", 2)},
       {"bad-index.ply", AsciiPly("0 0 0\n10 0 0\n0 10 0\n", 3, "3 0 1 7\n", 1)},
       {"no-faces.stl", "solid x\nendsolid x\n"},
-      {"garbage.obj", std::string("\x7f" "ELF binary junk \x01\x02\x03")},
+      {"garbage.obj", std::string("\x7f"
+                                  "ELF binary junk \x01\x02\x03")},
   };
   for (const auto& [name, content] : meshes) {
     WriteFileAtomically(Path(name), content);
