@@ -23,13 +23,7 @@ cv::Mat DecodeFile(const fs::path& path, int flags) {
   if (!fs::exists(path, ec)) throw IoError(Quoted(path) + ": image is missing");
   const std::string bytes = ReadFileBytes(path);
   CheckDeclaredImageSize(path, bytes, std::nullopt, "");
-  const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
-  cv::Mat image;
-  try {
-    image = cv::imdecode(buffer, flags);
-  } catch (const cv::Exception&) {
-    image.release();
-  }
+  const cv::Mat image = DecodeImageBytes(bytes, flags);
   if (image.empty()) throw IoError(Quoted(path) + ": cannot decode the image");
   return image;
 }

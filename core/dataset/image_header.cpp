@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "dataset/image_header.h"
 
+#include <opencv2/imgcodecs.hpp>
+
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -74,6 +76,15 @@ void CheckDeclaredImageSize(const std::filesystem::path& path, std::string_view 
   if (expected && *size != *expected) {
     throw FormatError(Quoted(path) + ": image is " + text + " but " + std::string(what) + " says " +
                       std::to_string(expected->width) + "x" + std::to_string(expected->height));
+  }
+}
+
+cv::Mat DecodeImageBytes(std::string_view bytes, int flags) {
+  try {
+    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
+    return cv::imdecode(buffer, flags);
+  } catch (const cv::Exception&) {
+    return {};
   }
 }
 

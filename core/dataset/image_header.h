@@ -22,4 +22,8 @@ std::optional<cv::Size> DeclaredImageSize(std::string_view bytes);
 void CheckDeclaredImageSize(const std::filesystem::path& path, std::string_view bytes,
                             std::optional<cv::Size> expected, std::string_view what);
 
+// Decodes an image file already read into memory (cv::imdecode flags); empty when OpenCV cannot.
+// Callers check the declared size first and choose their own message for an empty result.
+cv::Mat DecodeImageBytes(std::string_view bytes, int flags);
+
 }  // namespace layermod

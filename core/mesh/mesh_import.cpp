@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "mesh/model.h"
 #include "mesh/ply_header.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -28,8 +29,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kMinTriangleAreaMm2 = 1e-12;
-constexpr unsigned char kGrey = 180;  // = kDefaultGrey of mesh/model.h
-constexpr std::array<unsigned char, 3> kGreyColor = {kGrey, kGrey, kGrey};
+constexpr std::array<unsigned char, 3> kGreyColor = {kDefaultGrey, kDefaultGrey, kDefaultGrey};
 constexpr char kSoupMagic[8] = {'L', 'M', 'S', 'O', 'U', 'P', '0', '1'};
 
 // Checked on the raw import: post-processing (vertex joining, degenerate search) is undefined
@@ -199,17 +199,25 @@ TriangleSoup SoupFromImporter(const ProcessResult& run, const fs::path& path,
   if (run.signal_number == SIGINT || run.signal_number == SIGTERM || run.signal_number == SIGHUP) {
     throw Error(prefix + " was interrupted (signal " + std::to_string(run.signal_number) + ")");
   }
-  if (run.signal_number != 0 || (run.exit_code != 0 && LastLine(run.err).empty()) ||
-      run.exit_code == 1 || run.exit_code > kImporterError) {
-    const std::string how = run.signal_number != 0 ? "signal " + std::to_string(run.signal_number)
-                                                   : "exit status " + std::to_string(run.exit_code);
-    throw FormatError(prefix + " crashed (" + how +
-                      ") on this file; it is malformed or uses a variant that cannot be read");
+  const std::string message = LastLine(run.err);
+  if (run.signal_number == 0 && (run.exit_code == 0 || !message.empty())) {
+    switch (run.exit_code) {
+      case 0:
+        return ParseSoup(run.out, path.string());
+      case kImporterFormatError:
+        throw FormatError(message);
+      case kImporterIoError:
+        throw IoError(message);
+      case kImporterError:
+        throw Error(message);
+      default:
+        break;  // 1 (a sanitizer's report) or anything else: a crash
+    }
   }
-  if (run.exit_code == kImporterFormatError) throw FormatError(LastLine(run.err));
-  if (run.exit_code == kImporterIoError) throw IoError(LastLine(run.err));
-  if (run.exit_code == kImporterError) throw Error(LastLine(run.err));
-  return ParseSoup(run.out, path.string());
+  const std::string how = run.signal_number != 0 ? "signal " + std::to_string(run.signal_number)
+                                                 : "exit status " + std::to_string(run.exit_code);
+  throw FormatError(prefix + " crashed (" + how +
+                    ") on this file; it is malformed or uses a variant that cannot be read");
 }
 
 }  // namespace

@@ -20,13 +20,7 @@ cv::Mat ReadImage(const std::filesystem::path& path, int flags, const CaptureFil
   if (!std::filesystem::is_regular_file(path)) throw IoError(Quoted(path) + ": no such file");
   const std::string bytes = ReadFileBytes(path);
   CheckDeclaredImageSize(path, bytes, cv::Size(camera.width, camera.height), Quoted(files.camera));
-  cv::Mat image;
-  try {
-    const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
-    image = cv::imdecode(buffer, flags);
-  } catch (const cv::Exception&) {
-    image.release();
-  }
+  cv::Mat image = DecodeImageBytes(bytes, flags);
   if (image.empty()) throw FormatError(Quoted(path) + ": not a readable image");
   return image;
 }

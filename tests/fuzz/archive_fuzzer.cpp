@@ -10,22 +10,26 @@
 #include "templates/archive.h"
 #include "util/error.h"
 
+namespace {
+
+// The per-layer index of a loaded archive must partition each object's templates.
+void CheckIndex(const layermod::TemplateArchive& archive) {
+  for (const layermod::ArchiveObject& object : archive.manifest().objects) {
+    std::size_t in_layers = 0;
+    for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
+      in_layers += archive.TemplatesOf(object.obj_id, static_cast<int>(layer)).size();
+    }
+    if (in_layers != archive.TemplatesOf(object.obj_id).size()) std::abort();
+  }
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace layermod;
   fuzz::QuietLogsOnce();
   const std::string name = "fuzz-input.layermod";
-  try {
-    const TemplateArchive archive = ReadArchiveBytes(fuzz::AsText(data, size), name);
-    for (const ArchiveObject& object : archive.manifest().objects) {
-      const auto all = archive.TemplatesOf(object.obj_id);
-      std::size_t in_layers = 0;
-      for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
-        in_layers += archive.TemplatesOf(object.obj_id, static_cast<int>(layer)).size();
-      }
-      if (in_layers != all.size()) std::abort();  // the index must partition the templates
-    }
-  } catch (const Error& error) {
-    fuzz::AbortUnlessNamed(error, name);
-  }
+  fuzz::LoadOrNameTheFile([&] { CheckIndex(ReadArchiveBytes(fuzz::AsText(data, size), name)); },
+                          name);
   return 0;
 }

@@ -43,15 +43,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fuzz::QuietLogsOnce();
   fuzz::ClearScratchDir();
   const auto parts = fuzz::SplitParts(fuzz::AsText(data, size), 6);
-  try {
-    LoadSceneAndFirstFrame(parts);
-  } catch (const Error& error) {
-    fuzz::AbortUnlessNamed(error, fuzz::ScratchDir().string());
-  }
-  try {
-    LoadModelsInfo(fuzz::WriteScratchFile("models/models_info.json", parts[3]));
-  } catch (const Error& error) {
-    fuzz::AbortUnlessNamed(error, fuzz::ScratchDir().string());
-  }
+  const std::string scratch = fuzz::ScratchDir().string();
+  fuzz::LoadOrNameTheFile([&] { LoadSceneAndFirstFrame(parts); }, scratch);
+  fuzz::LoadOrNameTheFile(
+      [&] { LoadModelsInfo(fuzz::WriteScratchFile("models/models_info.json", parts[3])); },
+      scratch);
   return 0;
 }

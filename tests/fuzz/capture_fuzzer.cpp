@@ -41,10 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   files.camera = fuzz::WriteScratchFile("camera.json", parts[0]);
   files.depth = fuzz::WriteScratchFile("depth.png", parts[1]);
   files.color = fuzz::WriteScratchFile("color.png", parts[2]);
-  try {
-    CheckLoadedCapture(LoadCapture(files));
-  } catch (const Error& error) {
-    fuzz::AbortUnlessNamed(error, fuzz::ScratchDir().string());
-  }
+  fuzz::LoadOrNameTheFile([&] { CheckLoadedCapture(LoadCapture(files)); },
+                          fuzz::ScratchDir().string());
   return 0;
 }

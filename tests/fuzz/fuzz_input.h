@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "util/error.h"
+
 namespace layermod::fuzz {
 
 // Separates the files of a multi-file input (a capture: camera JSON, depth PNG, colour PNG).
@@ -36,6 +38,16 @@ std::filesystem::path WriteScratchFile(const std::string& name, std::string_view
 // The fuzzing contract for a refused input: its message must name the file (`name` is a path or
 // a file name that the message must contain); aborts (a finding) otherwise.
 void AbortUnlessNamed(const std::exception& error, const std::string& name);
+
+// Runs `load`; a layermod::Error it throws must name `name` (AbortUnlessNamed).
+template <typename F>
+void LoadOrNameTheFile(F&& load, const std::string& name) {
+  try {
+    load();
+  } catch (const Error& error) {
+    AbortUnlessNamed(error, name);
+  }
+}
 
 inline std::string_view AsText(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};

@@ -38,13 +38,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                            fuzz::AsText(data + 1, size - 1));
   LoadModelOptions options;
   options.max_triangles = 200'000;  // keeps each input fast; the limit itself is tested too
-  try {
-    Model model = LoadModel(path, options);
-    CheckLoadedModel(model);
-    RecentreOnSphere(model);
-    ToRenderMesh(model);
-  } catch (const Error& error) {
-    fuzz::AbortUnlessNamed(error, path.string());
-  }
+  fuzz::LoadOrNameTheFile(
+      [&] {
+        Model model = LoadModel(path, options);
+        CheckLoadedModel(model);
+        RecentreOnSphere(model);
+        ToRenderMesh(model);
+      },
+      path.string());
   return 0;
 }
