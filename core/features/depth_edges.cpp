@@ -46,20 +46,32 @@ float NormalisedSobel(const RowTriple& rows, int x, int cols) {
 
 }  // namespace
 
+cv::Mat DepthEdgeStrength(const cv::Mat& depth_mm) {
+  if (depth_mm.type() != CV_32F) throw Error("DepthEdgeMask: expected a CV_32F depth map");
+  cv::Mat strength(depth_mm.size(), CV_32F);
+  for (int y = 0; y < depth_mm.rows; ++y) {
+    const RowTriple rows = RowsAround(depth_mm, y);
+    auto* out = strength.ptr<float>(y);
+    for (int x = 0; x < depth_mm.cols; ++x) out[x] = NormalisedSobel(rows, x, depth_mm.cols);
+  }
+  return strength;
+}
+
+cv::Mat DepthEdgeMaskFromStrength(const cv::Mat& strength, float threshold_mm) {
+  if (strength.type() != CV_32F) throw Error("DepthEdgeMask: expected a CV_32F edge strength");
+  if (!(threshold_mm > 0.0f) || !std::isfinite(threshold_mm)) {
+    throw Error("DepthEdgeMask: threshold_mm must be positive and finite");
+  }
+  if (strength.empty()) return cv::Mat(strength.size(), CV_8U);
+  return strength > threshold_mm;
+}
+
 cv::Mat DepthEdgeMask(const cv::Mat& depth_mm, float threshold_mm) {
   if (depth_mm.type() != CV_32F) throw Error("DepthEdgeMask: expected a CV_32F depth map");
   if (!(threshold_mm > 0.0f) || !std::isfinite(threshold_mm)) {
     throw Error("DepthEdgeMask: threshold_mm must be positive and finite");
   }
-  cv::Mat edges = cv::Mat::zeros(depth_mm.size(), CV_8U);
-  for (int y = 0; y < depth_mm.rows; ++y) {
-    const RowTriple rows = RowsAround(depth_mm, y);
-    auto* out = edges.ptr<std::uint8_t>(y);
-    for (int x = 0; x < depth_mm.cols; ++x) {
-      if (NormalisedSobel(rows, x, depth_mm.cols) > threshold_mm) out[x] = 255;
-    }
-  }
-  return edges;
+  return DepthEdgeMaskFromStrength(DepthEdgeStrength(depth_mm), threshold_mm);
 }
 
 cv::Mat FillDepthHolesFromFar(const cv::Mat& depth_mm, int max_gap_px) {
@@ -72,8 +84,9 @@ cv::Mat FillDepthHolesFromFar(const cv::Mat& depth_mm, int max_gap_px) {
   // One max filter as wide as the largest gap: every pixel of such a hole sees its far side.
   const cv::Mat holes = filled <= 0.0f;
   cv::Mat farthest;
-  cv::dilate(filled, farthest,
-             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * max_gap_px + 1, 2 * max_gap_px + 1)));
+  cv::dilate(
+      filled, farthest,
+      cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * max_gap_px + 1, 2 * max_gap_px + 1)));
   farthest.copyTo(filled, holes);
   return filled;
 }

@@ -14,6 +14,11 @@ namespace layermod {
 // neither near nor far. Returns CV_8U of the same size. Throws Error for another type or a
 // non-positive threshold.
 cv::Mat DepthEdgeMask(const cv::Mat& depth_mm, float threshold_mm);
+// The two halves of DepthEdgeMask, for a frame searched with several thresholds: the Sobel
+// magnitude divided by 4 (CV_32F; -1 where the 3x3 window holds an invalid depth), then the
+// mask of a threshold on it.
+cv::Mat DepthEdgeStrength(const cv::Mat& depth_mm);
+cv::Mat DepthEdgeMaskFromStrength(const cv::Mat& strength, float threshold_mm);
 
 // Depth sensors leave holes along depth discontinuities (shadows, flying pixels removed), right
 // where the edges are. Fills each invalid pixel with the farthest valid depth within

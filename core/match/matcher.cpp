@@ -5,6 +5,8 @@
 #include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -27,6 +29,7 @@ struct Candidate {
 struct CoarseHit {
   int sum = 0;
   cv::Point cell;
+  float percent = 0.0f;  // SimilarityPercent of sum
 };
 
 struct Refined {
@@ -34,10 +37,26 @@ struct Refined {
   int sum = 0;
 };
 
-// Where the candidate points restrict the search, and how far.
+// Where the candidate points restrict the search: the level-0 pixels within the radius of some
+// point ("disks"), box-dilated once per call so that one lookup tells whether a template's
+// top-level cell comes near a point (see CellReach).
 struct CandidateArea {
-  const std::vector<cv::Point>* points = nullptr;
-  int radius_px = 0;
+  bool restricted = false;  // false: every position is searched
+  // Per top-level cell span (level-0 pixels per cell): reach(q - origin) != 0 iff some disk
+  // pixel lies in [q.x, q.x + span) x [q.y, q.y + span). Outside the image: no disk pixel.
+  struct Reach {
+    int span = 0;
+    cv::Point origin;
+    cv::Mat reach;  // CV_8U
+  };
+  std::vector<Reach> by_span;
+
+  const Reach* ForSpan(int span) const {
+    for (const Reach& reach : by_span) {
+      if (reach.span == span) return &reach;
+    }
+    return nullptr;
+  }
 };
 
 int FloorDiv(int value, int divisor) {
@@ -76,26 +95,67 @@ struct CandidateGeometry {
 CandidateGeometry Geometry(const TemplateRecord& record, int top, const SceneLevel& level) {
   const cv::Point half_box(record.levels[0].width / 2, record.levels[0].height / 2);
   const bool has_anchor = record.centre_offset_px != cv::Point2f(0.0f, 0.0f);
-  const cv::Point anchor = has_anchor ? cv::Point(static_cast<int>(std::lround(record.centre_offset_px.x)),
-                                                  static_cast<int>(std::lround(record.centre_offset_px.y)))
-                                      : half_box;
+  const cv::Point anchor = has_anchor
+                               ? cv::Point(static_cast<int>(std::lround(record.centre_offset_px.x)),
+                                           static_cast<int>(std::lround(record.centre_offset_px.y)))
+                               : half_box;
   return {level.spread_px << top, anchor, half_box};
 }
 
-// Whether the anchors of cell (gx, gy) come within the radius of `point`.
-bool CellNearPoint(int gx, int gy, const cv::Point& point, const CandidateGeometry& geometry,
-                   int radius_px) {
-  const int span = geometry.cell_span_px;
-  const cv::Point top_left = point - geometry.anchor;  // puts the anchor on the point
-  const int dx = std::max({gx * span - top_left.x, top_left.x - (gx * span + span - 1), 0});
-  const int dy = std::max({gy * span - top_left.y, top_left.y - (gy * span + span - 1), 0});
-  return static_cast<double>(dx) * dx + static_cast<double>(dy) * dy <=
-         static_cast<double>(radius_px) * radius_px;
+// The level-0 pixels within radius_px of some point, inside `bounds`: CV_8U over `bounds`.
+cv::Mat StampDisks(const std::vector<cv::Point>& points, int radius_px, const cv::Rect& bounds) {
+  cv::Mat disks = cv::Mat::zeros(bounds.size(), CV_8U);
+  const double radius_sq = static_cast<double>(radius_px) * radius_px;
+  for (const cv::Point& point : points) {
+    const int y0 = std::max(point.y - radius_px, bounds.y);
+    const int y1 = std::min(point.y + radius_px, bounds.br().y - 1);
+    for (int y = y0; y <= y1; ++y) {
+      const double dy = y - point.y;
+      const int half = static_cast<int>(std::floor(std::sqrt(radius_sq - dy * dy)));
+      const int x0 = std::max(point.x - half, bounds.x);
+      const int x1 = std::min(point.x + half, bounds.br().x - 1);
+      if (x0 > x1) continue;
+      std::uint8_t* row = disks.ptr<std::uint8_t>(y - bounds.y);
+      std::fill(row + (x0 - bounds.x), row + (x1 - bounds.x) + 1, std::uint8_t{1});
+    }
+  }
+  return disks;
+}
+
+// The candidate area of `points` for every top-level span the scene's levels can have.
+CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius_px,
+                                const PreparedScene& scene) {
+  CandidateArea area;
+  area.restricted = true;
+  if (points.empty()) return area;
+  const cv::Size image = scene.Level(0).size_px;
+  cv::Rect disks_box;
+  for (const cv::Point& point : points) {
+    disks_box |= cv::Rect(point - cv::Point(radius_px, radius_px),
+                          cv::Size(2 * radius_px + 1, 2 * radius_px + 1));
+  }
+  // Anchors lie in or near the template box, hence in or near the image: disks far outside can
+  // never be reached.
+  disks_box &= cv::Rect(-image.width, -image.height, 3 * image.width, 3 * image.height);
+  if (disks_box.empty()) return area;
+  const cv::Mat disks = StampDisks(points, radius_px, disks_box);
+  for (int top = 0; top < scene.LevelCount(); ++top) {
+    const int span = scene.Level(top).spread_px << top;
+    if (area.ForSpan(span) != nullptr) continue;
+    // A window starting up to span - 1 pixels left of or above the disks still reaches them.
+    CandidateArea::Reach reach{span, disks_box.tl() - cv::Point(span - 1, span - 1), cv::Mat()};
+    cv::Mat padded = cv::Mat::zeros(disks_box.height + span - 1, disks_box.width + span - 1, CV_8U);
+    disks.copyTo(padded(cv::Rect(cv::Point(span - 1, span - 1), disks_box.size())));
+    cv::dilate(padded, reach.reach, cv::Mat::ones(span, span, CV_8U), cv::Point(0, 0), 1,
+               cv::BORDER_CONSTANT, cv::Scalar(0));
+    area.by_span.push_back(std::move(reach));
+  }
+  return area;
 }
 
 // The top-level cells near some candidate point, as a mask and as merged row spans: scored
-// without a pass over the whole grid, and without scoring a cell twice where the neighbourhoods
-// of neighbouring points overlap.
+// without a pass over the whole grid. Cell (gx, gy) puts the template's anchor in
+// [gx * span, (gx + 1) * span) + anchor, so it is near when the reach map says so there.
 struct CandidateCells {
   cv::Size cells;
   std::vector<std::uint8_t> near;  // row-major over `cells`
@@ -106,31 +166,32 @@ struct CandidateCells {
   }
 };
 
+int CeilDiv(int value, int divisor) { return -FloorDiv(-value, divisor); }
+
 CandidateCells NearCells(const CandidateGeometry& geometry, const cv::Size& cells,
                          const CandidateArea& area) {
-  CandidateCells result{cells, std::vector<std::uint8_t>(static_cast<std::size_t>(cells.area()), 0),
-                        {}};
+  CandidateCells result{
+      cells, std::vector<std::uint8_t>(static_cast<std::size_t>(cells.area()), 0), {}};
   const int span = geometry.cell_span_px;
-  for (const cv::Point& point : *area.points) {
-    const cv::Point top_left = point - geometry.anchor;
-    const int gx0 = std::max(FloorDiv(top_left.x - area.radius_px, span), 0);
-    const int gx1 = std::min(FloorDiv(top_left.x + area.radius_px, span), cells.width - 1);
-    const int gy0 = std::max(FloorDiv(top_left.y - area.radius_px, span), 0);
-    const int gy1 = std::min(FloorDiv(top_left.y + area.radius_px, span), cells.height - 1);
-    for (int gy = gy0; gy <= gy1; ++gy) {
-      std::uint8_t* row = result.near.data() + static_cast<std::size_t>(gy) * cells.width;
-      for (int gx = gx0; gx <= gx1; ++gx) {
-        if (row[gx] == 0 && CellNearPoint(gx, gy, point, geometry, area.radius_px)) row[gx] = 1;
+  const CandidateArea::Reach* reach = area.ForSpan(span);
+  if (reach == nullptr) return result;
+  const cv::Point first = reach->origin - geometry.anchor;  // window corner of reach(0, 0)
+  const int gx0 = std::max(CeilDiv(first.x, span), 0);
+  const int gx1 = std::min(FloorDiv(first.x + reach->reach.cols - 1, span), cells.width - 1);
+  const int gy0 = std::max(CeilDiv(first.y, span), 0);
+  const int gy1 = std::min(FloorDiv(first.y + reach->reach.rows - 1, span), cells.height - 1);
+  for (int gy = gy0; gy <= gy1; ++gy) {
+    const std::uint8_t* reach_row = reach->reach.ptr<std::uint8_t>(gy * span - first.y);
+    std::uint8_t* row = result.near.data() + static_cast<std::size_t>(gy) * cells.width;
+    for (int gx = gx0; gx <= gx1; ++gx) {
+      if (reach_row[gx * span - first.x] == 0) continue;
+      row[gx] = 1;
+      if (!result.spans.empty() && result.spans.back().row == gy &&
+          result.spans.back().last_column == gx - 1) {
+        result.spans.back().last_column = gx;
+      } else {
+        result.spans.push_back({gy, gx, gx});
       }
-    }
-  }
-  for (int gy = 0; gy < cells.height; ++gy) {
-    const std::uint8_t* row = result.near.data() + static_cast<std::size_t>(gy) * cells.width;
-    for (int gx = 0; gx < cells.width; ++gx) {
-      if (row[gx] == 0) continue;
-      const int first = gx;
-      while (gx + 1 < cells.width && row[gx + 1] != 0) ++gx;
-      result.spans.push_back({gy, first, gx});
     }
   }
   return result;
@@ -213,44 +274,99 @@ std::optional<Refined> RefineHit(const TemplateRecord& record, const PreparedSce
   return refined;
 }
 
-std::vector<Candidate> MatchOne(const TemplateRecord& record, const PreparedScene& scene,
-                                const MatchOptions& options, const CandidateArea& area) {
-  if (record.status == TemplateStatus::kTooFewFeatures) return {};
+// One template's top-level hits and what refining them needs.
+struct TemplateHits {
+  const TemplateRecord* record = nullptr;
+  int top = 0;              // top pyramid level scored
+  int level0_features = 0;  // usable features at level 0
+  cv::Point half_box;
+  std::vector<CoarseHit> hits;  // best first
+};
+
+// A coarse hit ranked across templates: by its top-level similarity percentage (templates have
+// different feature counts, so their sums do not compare).
+struct RankedHit {
+  float percent = 0.0f;
+  std::uint32_t template_id = 0;
+  std::size_t source = 0;  // index into the TemplateHits list
+  std::size_t hit = 0;     // index into its hits
+};
+
+TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& scene,
+                           const MatchOptions& options, const CandidateArea& area) {
+  TemplateHits result;
+  result.record = &record;
+  if (record.status == TemplateStatus::kTooFewFeatures) return result;
   const std::vector<TemplateLevelSummary> levels = UsableLevels(record, scene);
-  if (levels.empty()) return {};
+  if (levels.empty()) return result;
   const int top = static_cast<int>(levels.size()) - 1;
   const SceneLevel& top_level = scene.LinearizedLevel(top);
   const cv::Size cells = GridPositionCount(levels[top].extent, top_level);
-  if (cells.empty()) return {};
+  if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
   GridSimilarity grid;
   CandidateCells near;
-  if (area.points == nullptr) {
+  if (!area.restricted) {
     grid = ComputeGridSimilarity(record.levels[top], top_level, cv::Mat(), similarity);
   } else {
     near = NearCells(geometry, cells, area);
-    if (near.spans.empty()) return {};
+    if (near.spans.empty()) return result;
     grid = ComputeGridSimilarityInSpans(record.levels[top], top_level, near.spans, similarity);
   }
   const auto accept = [&](const cv::Point& cell) {
-    return area.points == nullptr || near.Contains(cell);
+    return !area.restricted || near.Contains(cell);
   };
-  const int min_level0_sum =
-      MinimumSumForPercent(options.threshold_percent, levels[0].usable_features);
-  std::vector<Candidate> candidates;
-  for (const CoarseHit& hit :
-       CoarseHits(grid, options.threshold_percent, options.max_candidates_per_template, accept)) {
-    const std::optional<Refined> refined = RefineHit(record, scene, top, hit, similarity);
-    if (!refined || refined->sum < min_level0_sum) continue;
-    Candidate candidate;
-    candidate.match = {refined->position_px.x, refined->position_px.y,
-                       SimilarityPercent(refined->sum, levels[0].usable_features), record.id};
-    candidate.obj_id = record.obj_id;
-    candidate.centre_px = cv::Point2f(refined->position_px + geometry.half_box);
-    candidates.push_back(candidate);
+  result.top = top;
+  result.level0_features = levels[0].usable_features;
+  result.half_box = geometry.half_box;
+  result.hits =
+      CoarseHits(grid, options.threshold_percent, options.max_candidates_per_template, accept);
+  for (CoarseHit& hit : result.hits) {
+    hit.percent = SimilarityPercent(hit.sum, levels[top].usable_features);
   }
-  return candidates;
+  return result;
+}
+
+// The hits refined, best top-level similarity first, at most max_refinements over all templates.
+std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template,
+                                const MatchOptions& options) {
+  std::vector<RankedHit> ranked;
+  for (std::size_t t = 0; t < per_template.size(); ++t) {
+    const TemplateHits& source = per_template[t];
+    for (std::size_t h = 0; h < source.hits.size(); ++h) {
+      ranked.push_back({source.hits[h].percent, source.record->id, t, h});
+    }
+  }
+  const auto better = [&](const RankedHit& a, const RankedHit& b) {
+    const cv::Point& cell_a = per_template[a.source].hits[a.hit].cell;
+    const cv::Point& cell_b = per_template[b.source].hits[b.hit].cell;
+    return std::make_tuple(-a.percent, a.template_id, cell_a.y, cell_a.x) <
+           std::make_tuple(-b.percent, b.template_id, cell_b.y, cell_b.x);
+  };
+  const auto budget = static_cast<std::size_t>(options.max_refinements);
+  if (ranked.size() > budget) {
+    std::nth_element(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(budget),
+                     ranked.end(), better);
+    ranked.resize(budget);
+  }
+  return ranked;
+}
+
+std::optional<Candidate> RefineRankedHit(const TemplateHits& source, const CoarseHit& hit,
+                                         const PreparedScene& scene, const MatchOptions& options) {
+  const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
+  const std::optional<Refined> refined =
+      RefineHit(*source.record, scene, source.top, hit, similarity);
+  const int min_level0_sum =
+      MinimumSumForPercent(options.threshold_percent, source.level0_features);
+  if (!refined || refined->sum < min_level0_sum) return std::nullopt;
+  Candidate candidate;
+  candidate.match = {refined->position_px.x, refined->position_px.y,
+                     SimilarityPercent(refined->sum, source.level0_features), source.record->id};
+  candidate.obj_id = source.record->obj_id;
+  candidate.centre_px = cv::Point2f(refined->position_px + source.half_box);
+  return candidate;
 }
 
 bool BetterMatch(const Candidate& a, const Candidate& b) {
@@ -291,6 +407,9 @@ void MatchOptions::Validate() const {
   }
   if (max_matches < 1) {
     throw Error("match max_matches must be >= 1, got " + std::to_string(max_matches));
+  }
+  if (max_refinements < 1) {
+    throw Error("match max_refinements must be >= 1, got " + std::to_string(max_refinements));
   }
   if (max_candidates_per_template < 1) {
     throw Error("match max_candidates_per_template must be >= 1, got " +
@@ -348,17 +467,32 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
   ResolveSimdPath(options.simd);  // an unsupported forced path fails here, not in a worker
   if (scene.LevelCount() == 0 || templates.empty()) return {};
   // Any radius beyond the image diagonal reaches everything; clamping keeps the arithmetic small.
-  const CandidateArea area{candidate_points, std::min(candidate_radius_px, 1 << 20)};
-  std::vector<std::vector<Candidate>> per_template(templates.size());
+  const CandidateArea area =
+      candidate_points == nullptr
+          ? CandidateArea{}
+          : MakeCandidateArea(*candidate_points, std::min(candidate_radius_px, 1 << 20), scene);
+  // Two passes: every template scores its top level; then only the best hits over all
+  // templates are refined down the pyramid (refinement costs far more per hit than scoring).
+  std::vector<TemplateHits> per_template(templates.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, templates.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        per_template[i] = MatchOne(templates[i], scene, options, area);
+                        per_template[i] = ScoreTopLevel(templates[i], scene, options, area);
+                      }
+                    });
+  const std::vector<RankedHit> ranked = RankHits(per_template, options);
+  std::vector<std::optional<Candidate>> refined(ranked.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ranked.size()),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        const TemplateHits& source = per_template[ranked[i].source];
+                        refined[i] =
+                            RefineRankedHit(source, source.hits[ranked[i].hit], scene, options);
                       }
                     });
   std::vector<Candidate> candidates;
-  for (auto& found : per_template) {
-    candidates.insert(candidates.end(), found.begin(), found.end());
+  for (const std::optional<Candidate>& candidate : refined) {
+    if (candidate) candidates.push_back(*candidate);
   }
   return SuppressDuplicates(std::move(candidates), options);
 }

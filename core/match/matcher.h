@@ -29,6 +29,10 @@ struct MatchOptions {
   // Top-level positions refined per template, best first: bounds the work on cluttered scenes
   // where thousands of coarse positions pass the threshold.
   int max_candidates_per_template = 64;
+  // Top-level hits refined down the pyramid per call, best top-level similarity first over all
+  // templates: refining costs far more than scoring, and near a part thousands of templates pass
+  // the top-level threshold at several positions.
+  int max_refinements = 1000;
   SimdPath simd = SimdPath::kAuto;
 
   void Validate() const;  // throws Error naming the bad field
@@ -72,13 +76,16 @@ class PreparedScene {
   std::vector<std::unique_ptr<LazyLevel>> levels_;
 };
 
-// Matches every template (status kTooFewFeatures ones are skipped) against the scene. Per
-// template, over the levels both it and the scene have: every valid grid position of the top
-// level is scored (all modalities' features together); positions at or above the threshold are
-// refined pixel by pixel at that level within their grid cell, then at each lower level within
-// +-T of the upscaled position (the best spread score wins; ties go to the best pixel-exact
+// Matches every template (status kTooFewFeatures ones are skipped) against the scene, in two
+// passes. First, per template over the levels both it and the scene have, every valid grid
+// position of the top level is scored (all modalities' features together) and the positions at
+// or above the threshold are kept (at most max_candidates_per_template). Second, the best of
+// those hits over all templates (by top-level similarity, at most max_refinements) are refined
+// pixel by pixel at the top level within their grid cell, then at each lower level within +-T
+// of the upscaled position (the best spread score wins; ties go to the best pixel-exact
 // alignment, see ExactAlignmentScore); matches at or above the threshold at level 0 survive,
-// then non-maximum suppression (MatchOptions::nms_radius_px). Templates run in parallel (oneTBB).
+// then non-maximum suppression (MatchOptions::nms_radius_px). Both passes run in parallel
+// (oneTBB).
 //
 // candidate_points (level-0 pixels): when given, only top-level grid positions that put the
 // template's ANCHOR within candidate_radius_px of a point are scored; an empty list matches

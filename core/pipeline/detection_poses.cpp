@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline/detection_poses.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "pose/initial_pose.h"
@@ -25,6 +27,21 @@ Detection InitialDetection(const RawMatch& match, const TemplateRecord& tmpl,
   return detection;
 }
 
+Detection RefineCandidate(const RawMatch& match, const TemplateArchive& archive,
+                          const ArchiveObject& object, const Capture& capture,
+                          const DetectorOptions& options) {
+  const TemplateRecord& tmpl = archive.templates().at(match.template_id);
+  Detection detection = InitialDetection(match, tmpl, object, capture);
+  if (!capture.depth_mm.empty()) {
+    detection.icp = RefinePoseIcp(object.mesh, capture.camera, capture.depth_mm,
+                                  detection.cam_from_model, options.icp);
+    detection.cam_from_model = detection.icp.cam_from_model;
+  }
+  detection.verification = VerifyPose(object.mesh, capture.camera, detection.cam_from_model,
+                                      capture.depth_mm, capture.color, options.verification);
+  return detection;
+}
+
 bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& object) {
   const Eigen::Vector3d centre_a = a.cam_from_model * object.sphere.centre;
   const Eigen::Vector3d centre_b = b.cam_from_model * object.sphere.centre;
@@ -34,22 +51,17 @@ bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& o
 }  // namespace
 
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
-                                        const TemplateArchive& archive,
-                                        const ArchiveObject& object, const Capture& capture,
-                                        const DetectorOptions& options) {
+                                        const TemplateArchive& archive, const ArchiveObject& object,
+                                        const Capture& capture, const DetectorOptions& options) {
+  const auto candidates =
+      static_cast<std::size_t>(std::min(static_cast<int>(matches.size()), options.pose_candidates));
+  // Candidates are refined independently, in parallel (each costs several renders).
+  std::vector<Detection> refined(candidates);
+  tbb::parallel_for(std::size_t{0}, candidates, [&](std::size_t i) {
+    refined[i] = RefineCandidate(matches[i], archive, object, capture, options);
+  });
   std::vector<Detection> verified;
-  const int candidates = std::min(static_cast<int>(matches.size()), options.pose_candidates);
-  for (int i = 0; i < candidates; ++i) {
-    const RawMatch& match = matches[static_cast<std::size_t>(i)];
-    const TemplateRecord& tmpl = archive.templates().at(match.template_id);
-    Detection detection = InitialDetection(match, tmpl, object, capture);
-    if (!capture.depth_mm.empty()) {
-      detection.icp = RefinePoseIcp(object.mesh, capture.camera, capture.depth_mm,
-                                    detection.cam_from_model, options.icp);
-      detection.cam_from_model = detection.icp.cam_from_model;
-    }
-    detection.verification = VerifyPose(object.mesh, capture.camera, detection.cam_from_model,
-                                        capture.depth_mm, capture.color, options.verification);
+  for (Detection& detection : refined) {
     if (detection.verification.accepted) verified.push_back(std::move(detection));
   }
   // Rank by appearance and geometry together: a high LineMOD score on a pose the depth

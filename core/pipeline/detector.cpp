@@ -22,7 +22,9 @@ double MsSince(Clock::time_point start) {
 }
 
 bool SameIntrinsics(const PinholeCamera& a, const PinholeCamera& b) {
-  auto close = [](double x, double y) { return std::abs(x - y) <= 1e-3 * std::max(1.0, std::abs(y)); };
+  auto close = [](double x, double y) {
+    return std::abs(x - y) <= 1e-3 * std::max(1.0, std::abs(y));
+  };
   return a.width == b.width && a.height == b.height && close(a.fx, b.fx) && close(a.fy, b.fy) &&
          close(a.cx, b.cx) && close(a.cy, b.cy);
 }
@@ -34,14 +36,17 @@ bool SameSceneFeatures(const FeatureOptions& a, const FeatureOptions& b) {
          a.max_normal_depth_step_mm == b.max_normal_depth_step_mm;
 }
 
-std::vector<LayerEdgeRange> EdgeRanges(const TemplateArchive& archive, const ArchiveObject& object) {
+std::vector<LayerEdgeRange> EdgeRanges(const TemplateArchive& archive,
+                                       const ArchiveObject& object) {
   std::vector<LayerEdgeRange> ranges(object.layer_depths_mm.size());
   for (std::size_t layer = 0; layer < ranges.size(); ++layer) {
     for (const TemplateRecord& tmpl : archive.TemplatesOf(object.obj_id, static_cast<int>(layer))) {
       if (tmpl.status != TemplateStatus::kOk) continue;
       LayerEdgeRange& range = ranges[layer];
-      range.n_min = range.valid ? std::min(range.n_min, tmpl.depth_edge_count) : tmpl.depth_edge_count;
-      range.n_max = range.valid ? std::max(range.n_max, tmpl.depth_edge_count) : tmpl.depth_edge_count;
+      range.n_min =
+          range.valid ? std::min(range.n_min, tmpl.depth_edge_count) : tmpl.depth_edge_count;
+      range.n_max =
+          range.valid ? std::max(range.n_max, tmpl.depth_edge_count) : tmpl.depth_edge_count;
       range.valid = true;
     }
   }
@@ -66,24 +71,26 @@ void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera
     throw Error("capture: this mode needs depth; use --mode color-only for RGB-only captures");
   }
   if (!SameIntrinsics(capture.camera, archive_camera)) {
-    throw Error("capture: camera intrinsics differ from the archive's (templates were rendered "
-                "for another camera); retrain for this camera");
+    throw Error(
+        "capture: camera intrinsics differ from the archive's (templates were rendered "
+        "for another camera); retrain for this camera");
   }
 }
 
 // Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
 // templates, only around its surviving detection points.
-std::vector<RawMatch> MatchKeptBlocks(const PreparedScene& scene, const TemplateArchive& archive,
-                                      const ArchiveObject& object,
+std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
+                                      const TemplateArchive& archive, const ArchiveObject& object,
                                       const ObjectDiagnostics& diagnostics,
                                       const DetectorOptions& options) {
+  const cv::Point offset = prepared.region_px.tl();
   std::map<int, std::vector<cv::Point>> points_by_layer;
   for (int index : diagnostics.coarse.kept) {
     const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
     const int layer =
         diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index;
     for (const DetectionPoint& point : block.points) {
-      if (point.kept) points_by_layer[layer].push_back(point.pixel);
+      if (point.kept) points_by_layer[layer].push_back(point.pixel - offset);
     }
   }
   std::vector<RawMatch> matches;
@@ -91,8 +98,13 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedScene& scene, const Template
     // Detection points aim at the object's centre, where each template's anchor lies (the
     // projection of its sphere centre): the true centre is within half a step of a point.
     const int radius_px = options.coarse.point_step_px;
-    std::vector<RawMatch> layer_matches = MatchTemplates(
-        scene, archive.TemplatesOf(object.obj_id, layer), options.match, &points, radius_px);
+    std::vector<RawMatch> layer_matches =
+        MatchTemplates(prepared.scene, archive.TemplatesOf(object.obj_id, layer), options.match,
+                       &points, radius_px);
+    for (RawMatch& match : layer_matches) {
+      match.x += offset.x;
+      match.y += offset.y;
+    }
     matches.insert(matches.end(), layer_matches.begin(), layer_matches.end());
   }
   std::stable_sort(matches.begin(), matches.end(), [](const RawMatch& a, const RawMatch& b) {
@@ -101,13 +113,47 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedScene& scene, const Template
   return matches;
 }
 
+// The largest level-0 template box of the object.
+cv::Size LargestTemplate(const TemplateArchive& archive, const ArchiveObject& object) {
+  cv::Size largest;
+  for (const TemplateRecord& tmpl : archive.TemplatesOf(object.obj_id)) {
+    if (tmpl.levels.empty()) continue;
+    largest.width = std::max(largest.width, tmpl.levels[0].width);
+    largest.height = std::max(largest.height, tmpl.levels[0].height);
+  }
+  return largest;
+}
+
+// Scene-Patch matching reads the scene only near the surviving detection points: within a
+// template box of the point, plus the point search radius and a margin for image filtering at
+// the region's border.
+cv::Rect SearchRegion(const std::vector<ObjectDiagnostics>& diagnostics,
+                      const std::vector<cv::Size>& largest_templates,
+                      const DetectorOptions& options) {
+  constexpr int kFilterMarginPx = 8;
+  cv::Rect region;
+  for (std::size_t i = 0; i < diagnostics.size(); ++i) {
+    const cv::Size box = largest_templates[i];
+    const int reach_x = box.width + options.coarse.point_step_px + kFilterMarginPx;
+    const int reach_y = box.height + options.coarse.point_step_px + kFilterMarginPx;
+    for (const DetectionPoint& point : diagnostics[i].coarse.KeptPoints()) {
+      region |= cv::Rect(point.pixel.x - reach_x, point.pixel.y - reach_y, 2 * reach_x + 1,
+                         2 * reach_y + 1);
+    }
+  }
+  return region;
+}
+
 }  // namespace
 
 std::string_view ModeName(DetectionMode mode) {
   switch (mode) {
-    case DetectionMode::kScenePatch: return "scene-patch";
-    case DetectionMode::kExhaustive: return "exhaustive";
-    case DetectionMode::kColorOnly: return "color-only";
+    case DetectionMode::kScenePatch:
+      return "scene-patch";
+    case DetectionMode::kExhaustive:
+      return "exhaustive";
+    case DetectionMode::kColorOnly:
+      return "color-only";
   }
   return "?";
 }
@@ -117,7 +163,8 @@ DetectionMode ParseDetectionMode(std::string_view text) {
        {DetectionMode::kScenePatch, DetectionMode::kExhaustive, DetectionMode::kColorOnly}) {
     if (text == ModeName(mode)) return mode;
   }
-  throw Error("mode: expected scene-patch, exhaustive or color-only, got '" + std::string(text) + "'");
+  throw Error("mode: expected scene-patch, exhaustive or color-only, got '" + std::string(text) +
+              "'");
 }
 
 void DetectorOptions::Validate() const {
@@ -144,10 +191,12 @@ Detector::Detector(std::vector<TemplateArchive> archives) : archives_(std::move(
         throw Error("detector: object id " + std::to_string(object.obj_id) + " appears twice");
       }
       if (!SameSceneFeatures(object.profile.features, reference)) {
-        throw Error("detector: archives use different feature parameters (pyramid, spread, "
-                    "thresholds); train them with the same profile features");
+        throw Error(
+            "detector: archives use different feature parameters (pyramid, spread, "
+            "thresholds); train them with the same profile features");
       }
-      objects_.push_back({a, object.obj_id, EdgeRanges(archives_[a], object)});
+      objects_.push_back({a, object.obj_id, EdgeRanges(archives_[a], object),
+                          LargestTemplate(archives_[a], object)});
     }
   }
 }
@@ -169,58 +218,76 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   const auto start = Clock::now();
   DetectionResult result;
   const FeatureOptions& features = archives_.front().manifest().objects.at(0).profile.features;
-  const bool use_depth = options.mode != DetectionMode::kColorOnly;
+  const bool scene_patch = options.mode == DetectionMode::kScenePatch;
   Capture used = capture;
-  if (!use_depth) used.depth_mm = cv::Mat();
+  if (options.mode == DetectionMode::kColorOnly) used.depth_mm = cv::Mat();
 
-  auto stage_start = Clock::now();
-  const PreparedScene scene =
-      PrepareScene(used.color, used.depth_mm, used.camera, features, options.match.simd);
-  result.timings.prepare_ms = MsSince(stage_start);
-
-  // Coarse positioning counts depth edges with sensor holes filled: the same for every object.
-  cv::Mat filled_depth_mm;
-  if (options.mode == DetectionMode::kScenePatch) {
+  result.diagnostics.resize(objects_.size());
+  cv::Rect search_region(0, 0, used.color.cols, used.color.rows);
+  if (scene_patch) {
+    // Region division and coarse positioning need depth only: they run first, so that only
+    // the part of the scene they point at is prepared for matching.
+    auto stage_start = Clock::now();
+    const cv::Mat cell_depth_mm = CellMedianDepth(used.depth_mm, options.regions.cell_size_px);
+    result.timings.regions_ms += MsSince(stage_start);
     stage_start = Clock::now();
-    filled_depth_mm = FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px);
+    // Coarse positioning counts depth edges with sensor holes filled; only the threshold
+    // depends on the object.
+    const cv::Mat edge_strength =
+        DepthEdgeStrength(FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px));
     result.timings.coarse_ms += MsSince(stage_start);
-  }
-
-  for (const ObjectEntry& entry : objects_) {
-    const TemplateArchive& archive = archives_[entry.archive];
-    const ArchiveObject& object = archive.Object(entry.obj_id);
-    ObjectDiagnostics diagnostics;
-    diagnostics.obj_id = entry.obj_id;
-    if (options.mode == DetectionMode::kScenePatch) {
+    std::vector<cv::Size> largest_templates;
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      const ObjectEntry& entry = objects_[i];
+      const ArchiveObject& object = archives_[entry.archive].Object(entry.obj_id);
+      ObjectDiagnostics& diagnostics = result.diagnostics[i];
+      diagnostics.obj_id = entry.obj_id;
       stage_start = Clock::now();
-      diagnostics.division = DivideScene(used.depth_mm, object.layer_depths_mm,
-                                         object.sphere.radius, options.regions);
+      diagnostics.division =
+          DivideScene(cell_depth_mm, used.depth_mm.size(), object.layer_depths_mm,
+                      object.sphere.radius, options.regions);
       result.timings.regions_ms += MsSince(stage_start);
 
       stage_start = Clock::now();
       const float edge_threshold_mm =
           features.depth_edge_fraction * static_cast<float>(object.bbox_size.maxCoeff());
-      const cv::Mat edges = DepthEdgeMask(filled_depth_mm, edge_threshold_mm);
-      diagnostics.coarse = PositionCoarsely(diagnostics.division, used.depth_mm, edges,
-                                            used.camera.fx, object.diameter_mm,
-                                            entry.edge_ranges, options.coarse);
+      const cv::Mat edges = DepthEdgeMaskFromStrength(edge_strength, edge_threshold_mm);
+      diagnostics.coarse =
+          PositionCoarsely(diagnostics.division, used.depth_mm, edges, used.camera.fx,
+                           object.diameter_mm, entry.edge_ranges, options.coarse);
+      largest_templates.push_back(entry.largest_template);
       result.timings.coarse_ms += MsSince(stage_start);
-
-      stage_start = Clock::now();
-      diagnostics.matches = MatchKeptBlocks(scene, archive, object, diagnostics, options);
-      result.timings.match_ms += MsSince(stage_start);
-    } else {
-      stage_start = Clock::now();
-      diagnostics.matches = MatchTemplates(scene, archive.TemplatesOf(object.obj_id), options.match);
-      result.timings.match_ms += MsSince(stage_start);
     }
+    search_region = SearchRegion(result.diagnostics, largest_templates, options);
+  }
+
+  auto stage_start = Clock::now();
+  const PreparedRegion prepared = PrepareSceneRegion(used.color, used.depth_mm, used.camera,
+                                                     features, search_region, options.match.simd);
+  result.timings.prepare_ms = MsSince(stage_start);
+
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    const ObjectEntry& entry = objects_[i];
+    const TemplateArchive& archive = archives_[entry.archive];
+    const ArchiveObject& object = archive.Object(entry.obj_id);
+    ObjectDiagnostics& diagnostics = result.diagnostics[i];
+    diagnostics.obj_id = entry.obj_id;
+    stage_start = Clock::now();
+    if (prepared.region_px.empty()) {
+      // nothing survived coarse positioning: no match
+    } else if (scene_patch) {
+      diagnostics.matches = MatchKeptBlocks(prepared, archive, object, diagnostics, options);
+    } else {
+      diagnostics.matches =
+          MatchTemplates(prepared.scene, archive.TemplatesOf(object.obj_id), options.match);
+    }
+    result.timings.match_ms += MsSince(stage_start);
 
     stage_start = Clock::now();
     std::vector<Detection> detections =
         PosesFromMatches(diagnostics.matches, archive, object, used, options);
     result.timings.pose_ms += MsSince(stage_start);
     for (Detection& detection : detections) result.detections.push_back(std::move(detection));
-    result.diagnostics.push_back(std::move(diagnostics));
   }
   std::stable_sort(result.detections.begin(), result.detections.end(),
                    [](const Detection& a, const Detection& b) { return a.score > b.score; });

@@ -69,7 +69,7 @@ struct StageTimings {
 // What each stage saw, for overlays and the studio's preview.
 struct ObjectDiagnostics {
   std::int32_t obj_id = 0;
-  RegionDivision division;       // empty in exhaustive / colour-only mode
+  RegionDivision division;  // empty in exhaustive / colour-only mode
   CoarsePositioning coarse;
   std::vector<RawMatch> matches;  // after NMS, before pose verification
 };
@@ -101,6 +101,7 @@ class Detector {
     std::size_t archive = 0;
     std::int32_t obj_id = 0;
     std::vector<LayerEdgeRange> edge_ranges;  // per layer
+    cv::Size largest_template;                // level-0 px, over all its templates
   };
 
   std::vector<TemplateArchive> archives_;

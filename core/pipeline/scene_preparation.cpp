@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline/scene_preparation.h"
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -9,29 +12,69 @@
 
 namespace layermod {
 
+namespace {
+
+PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
+                        const PinholeCamera& camera, cv::Point offset_px,
+                        const FeatureOptions& features, SimdPath simd) {
+  const auto levels = static_cast<std::size_t>(features.pyramid_levels);
+  std::vector<cv::Mat> colors(levels);
+  std::vector<cv::Mat> depths(levels);
+  for (std::size_t level = 0; level < levels; ++level) {
+    colors[level] = level == 0 ? color_bgr : DownsampleColor(colors[level - 1]);
+    if (!depth_mm.empty()) {
+      depths[level] = level == 0 ? depth_mm : DownsampleNearest(depths[level - 1]);
+    }
+  }
+  // Each (level, modality) pair is quantized independently: level 0's two are the big ones, so
+  // two cores share the work evenly.
+  const auto modalities = static_cast<std::size_t>(kModalityCount);
+  std::vector<std::array<cv::Mat, kModalityCount>> quantized(levels);
+  tbb::parallel_for(std::size_t{0}, levels * modalities, [&](std::size_t task) {
+    const std::size_t level = task / modalities;
+    const int scale = 1 << level;
+    auto& maps = quantized[level];
+    if (static_cast<int>(task % modalities) == ModalityIndex(Modality::kColorGradient)) {
+      maps[ModalityIndex(Modality::kColorGradient)] =
+          QuantizeColorGradients(colors[level], features.weak_gradient);
+    } else if (!depths[level].empty()) {
+      const cv::Mat normals = ComputeDepthNormals(
+          depths[level], PyramidLevelCamera(camera, static_cast<int>(level)),
+          cv::Point(offset_px.x / scale, offset_px.y / scale), features.max_normal_depth_step_mm);
+      maps[ModalityIndex(Modality::kDepthNormal)] = QuantizeNormals(normals);
+    }
+  });
+  return PreparedScene(quantized, features.spread_px, simd);
+}
+
+}  // namespace
+
 PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            const PinholeCamera& camera, const FeatureOptions& features,
                            SimdPath simd) {
-  std::vector<std::array<cv::Mat, kModalityCount>> quantized(
-      static_cast<std::size_t>(features.pyramid_levels));
-  cv::Mat color = color_bgr;
-  cv::Mat depth = depth_mm;
-  for (int level = 0; level < features.pyramid_levels; ++level) {
-    if (level > 0) {
-      color = DownsampleColor(color);
-      if (!depth.empty()) depth = DownsampleNearest(depth);
-    }
-    auto& modalities = quantized[static_cast<std::size_t>(level)];
-    modalities[ModalityIndex(Modality::kColorGradient)] =
-        QuantizeColorGradients(color, features.weak_gradient);
-    if (!depth.empty()) {
-      const cv::Mat normals = ComputeDepthNormals(depth, PyramidLevelCamera(camera, level),
-                                                  cv::Point(0, 0),
-                                                  features.max_normal_depth_step_mm);
-      modalities[ModalityIndex(Modality::kDepthNormal)] = QuantizeNormals(normals);
-    }
-  }
-  return PreparedScene(quantized, features.spread_px, simd);
+  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd);
+}
+
+int RegionAlignmentPx(const FeatureOptions& features) {
+  const int top = features.pyramid_levels - 1;
+  return std::max(features.spread_px.at(static_cast<std::size_t>(top)), 1) << top;
+}
+
+PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
+                                  const PinholeCamera& camera, const FeatureOptions& features,
+                                  const cv::Rect& region, SimdPath simd) {
+  const int align = RegionAlignmentPx(features);
+  const cv::Point tl((region.x / align) * align, (region.y / align) * align);
+  const cv::Point br(region.br().x + (align - 1 - (region.br().x + align - 1) % align),
+                     region.br().y + (align - 1 - (region.br().y + align - 1) % align));
+  const cv::Rect aligned = cv::Rect(cv::Point(std::max(tl.x, 0), std::max(tl.y, 0)), br) &
+                           cv::Rect(0, 0, color_bgr.cols, color_bgr.rows);
+  PreparedRegion result;
+  if (aligned.empty()) return result;
+  result.region_px = aligned;
+  const cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(aligned);
+  result.scene = PrepareAt(color_bgr(aligned), depth, camera, aligned.tl(), features, simd);
+  return result;
 }
 
 }  // namespace layermod

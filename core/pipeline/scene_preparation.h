@@ -15,4 +15,21 @@ PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            const PinholeCamera& camera, const FeatureOptions& features,
                            SimdPath simd = SimdPath::kAuto);
 
+// The same for a part of the capture only: `region` (level-0 pixels) is grown to the alignment
+// of RegionAlignmentPx and clipped to the image, then prepared as if it were the whole image,
+// with the normals computed for its true place in the camera. Matches found in it are at
+// `offset_px` from the capture's pixels. Away from its border (a few pixels of image filtering)
+// every level is the same as the whole capture's.
+struct PreparedRegion {
+  PreparedScene scene;
+  cv::Rect region_px;  // the part prepared; empty when `region` missed the image
+};
+PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
+                                  const PinholeCamera& camera, const FeatureOptions& features,
+                                  const cv::Rect& region, SimdPath simd = SimdPath::kAuto);
+
+// The alignment of prepared regions: one top-level grid cell of the coarsest level (spread T
+// there times 2^level), so that the region's pyramid and grid line up with the whole image's.
+int RegionAlignmentPx(const FeatureOptions& features);
+
 }  // namespace layermod

@@ -13,34 +13,6 @@
 namespace layermod {
 namespace {
 
-cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell) {
-  const cv::Size cells((depth_mm.cols + cell - 1) / cell, (depth_mm.rows + cell - 1) / cell);
-  cv::Mat result(cells, CV_32F, cv::Scalar(0));
-  std::vector<float> values;
-  values.reserve(static_cast<std::size_t>(cell * cell));
-  for (int cy = 0; cy < cells.height; ++cy) {
-    for (int cx = 0; cx < cells.width; ++cx) {
-      values.clear();
-      const int y_end = std::min(depth_mm.rows, (cy + 1) * cell);
-      const int x_end = std::min(depth_mm.cols, (cx + 1) * cell);
-      for (int y = cy * cell; y < y_end; ++y) {
-        const float* row = depth_mm.ptr<float>(y);
-        for (int x = cx * cell; x < x_end; ++x) {
-          if (row[x] > 0.0f) values.push_back(row[x]);
-        }
-      }
-      // A cell needs a majority of valid pixels to carry a depth.
-      if (values.size() * 2 < static_cast<std::size_t>((y_end - cy * cell) * (x_end - cx * cell))) {
-        continue;
-      }
-      auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-      std::nth_element(values.begin(), middle, values.end());
-      result.at<float>(cy, cx) = *middle;
-    }
-  }
-  return result;
-}
-
 // Breadth-first growth from `seed` over valid cells while the depth spread stays within
 // `spread_mm`. Marks grown cells with `stamp` in `visited` and returns them.
 std::vector<int> GrowRegion(const cv::Mat& cell_depth, int seed, double spread_mm, int stamp,
@@ -55,8 +27,8 @@ std::vector<int> GrowRegion(const cv::Mat& cell_depth, int seed, double spread_m
   for (std::size_t head = 0; head < region.size(); ++head) {
     const int cell = region[head];
     const int x = cell % width;
-    const int neighbours[4] = {x > 0 ? cell - 1 : -1, x + 1 < width ? cell + 1 : -1,
-                               cell - width, cell + width};
+    const int neighbours[4] = {x > 0 ? cell - 1 : -1, x + 1 < width ? cell + 1 : -1, cell - width,
+                               cell + width};
     for (int next : neighbours) {
       if (next < 0 || next >= total || visited[static_cast<std::size_t>(next)] == stamp) continue;
       const float z = depth[next];
@@ -88,8 +60,8 @@ void SplitIntoBlocks(const cv::Mat& layer_cells, int layer_index, double layer_d
                      const RegionDivisionOptions& options, const cv::Size& image_size,
                      std::vector<SceneBlock>& blocks) {
   cv::Mat labels, stats, centroids;
-  const int count = cv::connectedComponentsWithStats(layer_cells, labels, stats, centroids, 8,
-                                                     CV_32S);
+  const int count =
+      cv::connectedComponentsWithStats(layer_cells, labels, stats, centroids, 8, CV_32S);
   const int cell = options.cell_size_px;
   for (int label = 1; label < count; ++label) {
     const int area = stats.at<int>(label, cv::CC_STAT_AREA);
@@ -99,11 +71,12 @@ void SplitIntoBlocks(const cv::Mat& layer_cells, int layer_index, double layer_d
     block.layer_depth_mm = layer_depth_mm;
     block.cells = (labels == label);
     block.cell_count = area;
-    const cv::Rect cells(stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
-                         stats.at<int>(label, cv::CC_STAT_WIDTH),
-                         stats.at<int>(label, cv::CC_STAT_HEIGHT));
-    block.bbox_px = cv::Rect(cells.x * cell, cells.y * cell, cells.width * cell,
-                             cells.height * cell) & cv::Rect(cv::Point(0, 0), image_size);
+    const cv::Rect cells(
+        stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
+        stats.at<int>(label, cv::CC_STAT_WIDTH), stats.at<int>(label, cv::CC_STAT_HEIGHT));
+    block.bbox_px =
+        cv::Rect(cells.x * cell, cells.y * cell, cells.width * cell, cells.height * cell) &
+        cv::Rect(cv::Point(0, 0), image_size);
     blocks.push_back(std::move(block));
   }
 }
@@ -146,10 +119,53 @@ cv::Mat DepthToMillimetres(const cv::Mat& depth, double depth_scale_mm) {
   return depth_mm;
 }
 
+cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell) {
+  if (depth_mm.type() != CV_32F) throw Error("region division: depth must be CV_32F mm");
+  if (cell < 1) throw Error("region division: cell size must be positive");
+  const cv::Size cells((depth_mm.cols + cell - 1) / cell, (depth_mm.rows + cell - 1) / cell);
+  cv::Mat result(cells, CV_32F, cv::Scalar(0));
+  std::vector<float> values;
+  values.reserve(static_cast<std::size_t>(cell * cell));
+  for (int cy = 0; cy < cells.height; ++cy) {
+    for (int cx = 0; cx < cells.width; ++cx) {
+      values.clear();
+      const int y_end = std::min(depth_mm.rows, (cy + 1) * cell);
+      const int x_end = std::min(depth_mm.cols, (cx + 1) * cell);
+      for (int y = cy * cell; y < y_end; ++y) {
+        const float* row = depth_mm.ptr<float>(y);
+        for (int x = cx * cell; x < x_end; ++x) {
+          if (row[x] > 0.0f) values.push_back(row[x]);
+        }
+      }
+      // A cell needs a majority of valid pixels to carry a depth.
+      if (values.size() * 2 < static_cast<std::size_t>((y_end - cy * cell) * (x_end - cx * cell))) {
+        continue;
+      }
+      auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+      std::nth_element(values.begin(), middle, values.end());
+      result.at<float>(cy, cx) = *middle;
+    }
+  }
+  return result;
+}
+
 RegionDivision DivideScene(const cv::Mat& depth_mm, const std::vector<double>& layer_depths_mm,
                            double radius_mm, const RegionDivisionOptions& options) {
   options.Validate();
-  if (depth_mm.type() != CV_32F) throw Error("region division: depth must be CV_32F mm");
+  return DivideScene(CellMedianDepth(depth_mm, options.cell_size_px), depth_mm.size(),
+                     layer_depths_mm, radius_mm, options);
+}
+
+RegionDivision DivideScene(const cv::Mat& cell_depth_mm, const cv::Size& image_size,
+                           const std::vector<double>& layer_depths_mm, double radius_mm,
+                           const RegionDivisionOptions& options) {
+  options.Validate();
+  const cv::Size expected_cells(
+      (image_size.width + options.cell_size_px - 1) / options.cell_size_px,
+      (image_size.height + options.cell_size_px - 1) / options.cell_size_px);
+  if (cell_depth_mm.type() != CV_32F || cell_depth_mm.size() != expected_cells) {
+    throw Error("region division: cell depth must be CV_32F, one value per cell of the image");
+  }
   if (layer_depths_mm.empty()) throw Error("region division: no depth layers");
   if (!(radius_mm > 0.0)) throw Error("region division: sphere radius must be positive");
   const double spread = options.depth_spread_mm > 0 ? options.depth_spread_mm : radius_mm;
@@ -157,9 +173,9 @@ RegionDivision DivideScene(const cv::Mat& depth_mm, const std::vector<double>& l
       options.max_layer_distance_mm > 0 ? options.max_layer_distance_mm : radius_mm;
 
   RegionDivision division;
-  division.image_size = depth_mm.size();
+  division.image_size = image_size;
   division.cell_size_px = options.cell_size_px;
-  division.cell_depth_mm = CellMedianDepth(depth_mm, options.cell_size_px);
+  division.cell_depth_mm = cell_depth_mm;
   const cv::Mat& cell_depth = division.cell_depth_mm;
   std::vector<cv::Mat> layer_cells(layer_depths_mm.size());
   for (cv::Mat& cells : layer_cells) cells = cv::Mat::zeros(cell_depth.size(), CV_8U);
@@ -181,7 +197,8 @@ RegionDivision DivideScene(const cv::Mat& depth_mm, const std::vector<double>& l
       for (int cell : region) sum += cell_depth.ptr<float>()[cell];
       const double mean = sum / static_cast<double>(region.size());
       const int layer = NearestLayer(mean, layer_depths_mm);
-      if (std::abs(layer_depths_mm[static_cast<std::size_t>(layer)] - mean) > max_distance) continue;
+      if (std::abs(layer_depths_mm[static_cast<std::size_t>(layer)] - mean) > max_distance)
+        continue;
       std::uint8_t* cells = layer_cells[static_cast<std::size_t>(layer)].ptr<std::uint8_t>();
       for (int cell : region) cells[cell] = 255;
     }

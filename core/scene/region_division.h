@@ -25,8 +25,8 @@ struct RegionDivisionOptions {
 struct SceneBlock {
   int layer_index = 0;
   double layer_depth_mm = 0.0;
-  cv::Mat cells;      // CV_8U, one value per cell, 255 inside the block
-  cv::Rect bbox_px;   // bounding box in image pixels (clipped to the image)
+  cv::Mat cells;     // CV_8U, one value per cell, 255 inside the block
+  cv::Rect bbox_px;  // bounding box in image pixels (clipped to the image)
   int cell_count = 0;
 };
 
@@ -47,5 +47,13 @@ cv::Mat DepthToMillimetres(const cv::Mat& depth, double depth_scale_mm = 1.0);
 // attached to the nearest of `layer_depths_mm`. `radius_mm`: the object's sphere radius.
 RegionDivision DivideScene(const cv::Mat& depth_mm, const std::vector<double>& layer_depths_mm,
                            double radius_mm, const RegionDivisionOptions& options = {});
+
+// The per-cell median depth DivideScene starts from (CV_32F, 0 where fewer than half the cell's
+// pixels are valid). It depends on the depth map and the cell size only, so a frame searched for
+// several objects computes it once and divides with the overload below.
+cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell_size_px);
+RegionDivision DivideScene(const cv::Mat& cell_depth_mm, const cv::Size& image_size,
+                           const std::vector<double>& layer_depths_mm, double radius_mm,
+                           const RegionDivisionOptions& options = {});
 
 }  // namespace layermod

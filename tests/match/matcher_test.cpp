@@ -269,5 +269,49 @@ TEST(MatcherTest, BadInputsThrowClearErrors) {
   EXPECT_THROW(prepared.Level(2), Error);
 }
 
+TEST(MatcherTest, TheRefinementBudgetKeepsTheBestTopLevelHits) {
+  cv::RNG rng(67);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  // Five templates cut from the scene at distinct places: each scores 100 % at its own place.
+  std::vector<TemplateRecord> records;
+  for (int i = 0; i < 5; ++i) {
+    records.push_back(test::TemplateFromScene(scene, {20 + 55 * i, 40 + 30 * i, 40, 40}, 63,
+                                              static_cast<std::uint32_t>(i), rng));
+  }
+  MatchOptions options;
+  options.threshold_percent = 95.0f;
+  std::vector<std::uint32_t> found;
+  for (const RawMatch& match : Match(prepared, records, options))
+    found.push_back(match.template_id);
+  std::sort(found.begin(), found.end());
+  EXPECT_EQ(found, (std::vector<std::uint32_t>{0, 1, 2, 3, 4}));
+  // With room for one refinement, only the best top-level hit is refined: all tie at 100 %,
+  // so the lowest template id wins.
+  options.max_refinements = 1;
+  const std::vector<RawMatch> budgeted = Match(prepared, records, options);
+  ASSERT_EQ(budgeted.size(), 1u);
+  EXPECT_EQ(budgeted[0].template_id, 0u);
+  EXPECT_EQ(cv::Point(budgeted[0].x, budgeted[0].y), cv::Point(20, 40));
+  options.max_refinements = 0;
+  EXPECT_THROW(Match(prepared, records, options), Error);
+}
+
+TEST(MatcherTest, CandidatePointsOutsideTheImageReachOnlyNearbyTemplates) {
+  cv::RNG rng(68);
+  test::TestScene scene = test::RandomScene({200, 150}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  const cv::Rect box(0, 0, 40, 40);
+  TemplateRecord record = test::TemplateFromScene(scene, box, 63, 9, rng);
+  record.centre_offset_px = cv::Point2f(2.0f, 2.0f);
+  // A point just outside the top-left corner is within 5 px of the anchor (2, 2).
+  const std::vector<cv::Point> outside = {cv::Point(-1, -1)};
+  const auto found = Match(prepared, {record}, {}, &outside, 5);
+  ASSERT_FALSE(found.empty());
+  EXPECT_EQ(cv::Point(found[0].x, found[0].y), box.tl());
+  const std::vector<cv::Point> far_outside = {cv::Point(-500, -500)};
+  EXPECT_TRUE(Match(prepared, {record}, {}, &far_outside, 5).empty());
+}
+
 }  // namespace
 }  // namespace layermod

@@ -116,5 +116,24 @@ TEST(RegionDivisionTest, RejectsBadArguments) {
   EXPECT_THROW(DivideScene(depth, kLayers, kRadius, options), Error);
 }
 
+TEST(RegionDivisionTest, DividingPrecomputedCellDepthsGivesTheSameBlocks) {
+  cv::Mat depth = TableWithBox({203, 157}, {40, 30, 60, 50});
+  depth(cv::Rect(150, 100, 20, 20)).setTo(0.0f);  // a hole
+  const RegionDivision direct = DivideScene(depth, kLayers, kRadius);
+  const RegionDivisionOptions options;
+  const cv::Mat cells = CellMedianDepth(depth, options.cell_size_px);
+  const RegionDivision shared = DivideScene(cells, depth.size(), kLayers, kRadius, options);
+  EXPECT_EQ(cv::norm(direct.cell_depth_mm, shared.cell_depth_mm, cv::NORM_INF), 0.0);
+  ASSERT_EQ(direct.blocks.size(), shared.blocks.size());
+  for (std::size_t i = 0; i < direct.blocks.size(); ++i) {
+    EXPECT_EQ(direct.blocks[i].layer_index, shared.blocks[i].layer_index);
+    EXPECT_EQ(direct.blocks[i].bbox_px, shared.blocks[i].bbox_px);
+    EXPECT_EQ(cv::countNonZero(direct.blocks[i].cells != shared.blocks[i].cells), 0);
+  }
+  // Cell depths of another grid are refused.
+  EXPECT_THROW(DivideScene(cells, cv::Size(640, 480), kLayers, kRadius, options), Error);
+  EXPECT_THROW(CellMedianDepth(cv::Mat(10, 10, CV_16U), 8), Error);
+}
+
 }  // namespace
 }  // namespace layermod
