@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "match/similarity.h"
 #include "util/error.h"
@@ -374,8 +375,8 @@ bool BetterMatch(const Candidate& a, const Candidate& b) {
          std::make_tuple(-b.match.similarity_percent, b.match.template_id, b.match.y, b.match.x);
 }
 
-// Greedy non-maximum suppression: best first, a match is dropped when a kept match of the same
-// object has its centre within the radius.
+// Greedy non-maximum suppression: best first, a match is dropped when matches_per_location kept
+// matches of the same object have their centres within the radius.
 std::vector<RawMatch> SuppressDuplicates(std::vector<Candidate> candidates,
                                          const MatchOptions& options) {
   std::sort(candidates.begin(), candidates.end(), BetterMatch);
@@ -383,11 +384,11 @@ std::vector<RawMatch> SuppressDuplicates(std::vector<Candidate> candidates,
   std::vector<const Candidate*> kept;
   for (const Candidate& candidate : candidates) {
     if (static_cast<int>(kept.size()) >= options.max_matches) break;
-    const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const Candidate* other) {
+    const auto neighbours = std::count_if(kept.begin(), kept.end(), [&](const Candidate* other) {
       const cv::Point2f offset = candidate.centre_px - other->centre_px;
       return other->obj_id == candidate.obj_id && offset.dot(offset) <= radius_sq;
     });
-    if (!duplicate) kept.push_back(&candidate);
+    if (neighbours < options.matches_per_location) kept.push_back(&candidate);
   }
   std::vector<RawMatch> matches;
   matches.reserve(kept.size());
@@ -407,6 +408,10 @@ void MatchOptions::Validate() const {
   }
   if (max_matches < 1) {
     throw Error("match max_matches must be >= 1, got " + std::to_string(max_matches));
+  }
+  if (matches_per_location < 1) {
+    throw Error("match matches_per_location must be >= 1, got " +
+                std::to_string(matches_per_location));
   }
   if (max_refinements < 1) {
     throw Error("match max_refinements must be >= 1, got " + std::to_string(max_refinements));
@@ -460,24 +465,39 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      const MatchOptions& options,
                                      const std::vector<cv::Point>* candidate_points,
                                      int candidate_radius_px) {
+  const TemplateSearch search{templates, candidate_points};
+  return MatchTemplateGroups(scene, std::span<const TemplateSearch>(&search, 1), options,
+                             candidate_radius_px);
+}
+
+std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
+                                          std::span<const TemplateSearch> searches,
+                                          const MatchOptions& options, int candidate_radius_px) {
   options.Validate();
   if (candidate_radius_px < 0) {
     throw Error("candidate radius must be >= 0 px, got " + std::to_string(candidate_radius_px));
   }
   ResolveSimdPath(options.simd);  // an unsupported forced path fails here, not in a worker
-  if (scene.LevelCount() == 0 || templates.empty()) return {};
+  if (scene.LevelCount() == 0) return {};
   // Any radius beyond the image diagonal reaches everything; clamping keeps the arithmetic small.
-  const CandidateArea area =
-      candidate_points == nullptr
-          ? CandidateArea{}
-          : MakeCandidateArea(*candidate_points, std::min(candidate_radius_px, 1 << 20), scene);
+  const int radius_px = std::min(candidate_radius_px, 1 << 20);
+  std::vector<CandidateArea> areas;
+  std::vector<std::pair<const TemplateRecord*, const CandidateArea*>> work;
+  areas.reserve(searches.size());
+  for (const TemplateSearch& search : searches) {
+    areas.push_back(search.candidate_points == nullptr
+                        ? CandidateArea{}
+                        : MakeCandidateArea(*search.candidate_points, radius_px, scene));
+    for (const TemplateRecord& record : search.templates) work.emplace_back(&record, &areas.back());
+  }
   // Two passes: every template scores its top level; then only the best hits over all
   // templates are refined down the pyramid (refinement costs far more per hit than scoring).
-  std::vector<TemplateHits> per_template(templates.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, templates.size()),
+  std::vector<TemplateHits> per_template(work.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        per_template[i] = ScoreTopLevel(templates[i], scene, options, area);
+                        per_template[i] =
+                            ScoreTopLevel(*work[i].first, scene, options, *work[i].second);
                       }
                     });
   const std::vector<RankedHit> ranked = RankHits(per_template, options);

@@ -25,6 +25,9 @@ struct MatchOptions {
   // (level-0 px) are duplicates: only the best is kept. Different objects never suppress each
   // other. 0 removes exact duplicates only.
   int nms_radius_px = 16;
+  // Matches kept per neighbourhood of that radius: the best few templates at one place differ
+  // in rotation, and the pose stage picks the one the depth confirms.
+  int matches_per_location = 3;
   int max_matches = 100;  // best matches returned after suppression
   // Top-level positions refined per template, best first: bounds the work on cluttered scenes
   // where thousands of coarse positions pass the threshold.
@@ -32,7 +35,7 @@ struct MatchOptions {
   // Top-level hits refined down the pyramid per call, best top-level similarity first over all
   // templates: refining costs far more than scoring, and near a part thousands of templates pass
   // the top-level threshold at several positions.
-  int max_refinements = 1000;
+  int max_refinements = 1500;
   SimdPath simd = SimdPath::kAuto;
 
   void Validate() const;  // throws Error naming the bad field
@@ -100,5 +103,17 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      const MatchOptions& options,
                                      const std::vector<cv::Point>* candidate_points = nullptr,
                                      int candidate_radius_px = 0);
+
+// Several template sets, each searched around its own candidate points (nullptr: everywhere),
+// in one call: as MatchTemplates over their union, so the refinement budget
+// (max_refinements), the ranking and the suppression are shared. Scene-Patch matches each kept
+// block's layer templates around that block's points this way.
+struct TemplateSearch {
+  std::span<const TemplateRecord> templates;
+  const std::vector<cv::Point>* candidate_points = nullptr;
+};
+std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
+                                          std::span<const TemplateSearch> searches,
+                                          const MatchOptions& options, int candidate_radius_px = 0);
 
 }  // namespace layermod

@@ -28,18 +28,35 @@ Detection InitialDetection(const RawMatch& match, const TemplateRecord& tmpl,
 }
 
 Detection RefineCandidate(const RawMatch& match, const TemplateArchive& archive,
-                          const ArchiveObject& object, const Capture& capture,
-                          const DetectorOptions& options) {
+                          const ArchiveObject& object, const RenderMesh& pose_mesh,
+                          const Capture& capture, const DetectorOptions& options) {
   const TemplateRecord& tmpl = archive.templates().at(match.template_id);
   Detection detection = InitialDetection(match, tmpl, object, capture);
   if (!capture.depth_mm.empty()) {
-    detection.icp = RefinePoseIcp(object.mesh, capture.camera, capture.depth_mm,
+    detection.icp = RefinePoseIcp(pose_mesh, capture.camera, capture.depth_mm,
                                   detection.cam_from_model, options.icp);
     detection.cam_from_model = detection.icp.cam_from_model;
   }
-  detection.verification = VerifyPose(object.mesh, capture.camera, detection.cam_from_model,
+  detection.verification = VerifyPose(pose_mesh, capture.camera, detection.cam_from_model,
                                       capture.depth_mm, capture.color, options.verification);
   return detection;
+}
+
+// The best matches, skipping those of a template already chosen a few pixels away: ICP would
+// take both to the same pose.
+std::vector<RawMatch> DistinctCandidates(const std::vector<RawMatch>& matches, int count) {
+  constexpr int kSamePlacePx = 4;
+  std::vector<RawMatch> chosen;
+  for (const RawMatch& match : matches) {
+    if (static_cast<int>(chosen.size()) == count) break;
+    const bool repeated = std::any_of(chosen.begin(), chosen.end(), [&](const RawMatch& other) {
+      return other.template_id == match.template_id &&
+             std::abs(other.x - match.x) <= kSamePlacePx &&
+             std::abs(other.y - match.y) <= kSamePlacePx;
+    });
+    if (!repeated) chosen.push_back(match);
+  }
+  return chosen;
 }
 
 bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& object) {
@@ -52,23 +69,25 @@ bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& o
 
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,
-                                        const Capture& capture, const DetectorOptions& options) {
-  const auto candidates =
-      static_cast<std::size_t>(std::min(static_cast<int>(matches.size()), options.pose_candidates));
+                                        const RenderMesh& pose_mesh, const Capture& capture,
+                                        const DetectorOptions& options) {
+  const std::vector<RawMatch> candidates = DistinctCandidates(matches, options.pose_candidates);
   // Candidates are refined independently, in parallel (each costs several renders).
-  std::vector<Detection> refined(candidates);
-  tbb::parallel_for(std::size_t{0}, candidates, [&](std::size_t i) {
-    refined[i] = RefineCandidate(matches[i], archive, object, capture, options);
+  std::vector<Detection> refined(candidates.size());
+  tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t i) {
+    refined[i] = RefineCandidate(candidates[i], archive, object, pose_mesh, capture, options);
   });
   std::vector<Detection> verified;
   for (Detection& detection : refined) {
     if (detection.verification.accepted) verified.push_back(std::move(detection));
   }
-  // Rank by appearance and geometry together: a high LineMOD score on a pose the depth
-  // contradicts is worth less than a slightly lower score the depth confirms.
+  // Rank by appearance, geometry and colour together: a high LineMOD score on a pose the depth
+  // or the colours contradict is worth less than a slightly lower score they confirm (among the
+  // few templates matched at one place, this picks the right rotation).
   const bool has_depth = !capture.depth_mm.empty();
   auto rank = [has_depth](const Detection& d) {
-    return d.score * (has_depth ? d.verification.depth_inlier_ratio : 1.0);
+    return d.score * (has_depth ? d.verification.depth_inlier_ratio : 1.0) *
+           d.verification.color_agreement;
   };
   std::stable_sort(verified.begin(), verified.end(),
                    [&](const Detection& a, const Detection& b) { return rank(a) > rank(b); });

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "features/depth_edges.h"
+#include "mesh/vertex_clustering.h"
 #include "pipeline/detection_poses.h"
 #include "pipeline/scene_preparation.h"
 #include "util/error.h"
@@ -93,25 +94,25 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
       if (point.kept) points_by_layer[layer].push_back(point.pixel - offset);
     }
   }
-  std::vector<RawMatch> matches;
+  std::vector<TemplateSearch> searches;
   for (const auto& [layer, points] : points_by_layer) {
-    // Detection points aim at the object's centre, where each template's anchor lies (the
-    // projection of its sphere centre): the true centre is within half a step of a point.
-    const int radius_px = options.coarse.point_step_px;
-    std::vector<RawMatch> layer_matches =
-        MatchTemplates(prepared.scene, archive.TemplatesOf(object.obj_id, layer), options.match,
-                       &points, radius_px);
-    for (RawMatch& match : layer_matches) {
-      match.x += offset.x;
-      match.y += offset.y;
-    }
-    matches.insert(matches.end(), layer_matches.begin(), layer_matches.end());
+    searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points});
   }
-  std::stable_sort(matches.begin(), matches.end(), [](const RawMatch& a, const RawMatch& b) {
-    return a.similarity_percent > b.similarity_percent;
-  });
+  // Detection points aim at the object's centre, where each template's anchor lies (the
+  // projection of its sphere centre): the true centre is within half a step of a point.
+  std::vector<RawMatch> matches =
+      MatchTemplateGroups(prepared.scene, searches, options.match, options.coarse.point_step_px);
+  for (RawMatch& match : matches) {
+    match.x += offset.x;
+    match.y += offset.y;
+  }
   return matches;
 }
+
+// ICP and verification render the object up to 32 times per frame; at working distance a
+// pixel spans 1-2 mm, so a few thousand triangles draw the same depth as the full mesh.
+constexpr std::size_t kPoseMeshTriangles = 3000;
+constexpr double kPoseMeshFinestCellMm = 0.5;
 
 // The largest level-0 template box of the object.
 cv::Size LargestTemplate(const TemplateArchive& archive, const ArchiveObject& object) {
@@ -195,8 +196,10 @@ Detector::Detector(std::vector<TemplateArchive> archives) : archives_(std::move(
             "detector: archives use different feature parameters (pyramid, spread, "
             "thresholds); train them with the same profile features");
       }
-      objects_.push_back({a, object.obj_id, EdgeRanges(archives_[a], object),
-                          LargestTemplate(archives_[a], object)});
+      objects_.push_back(
+          {a, object.obj_id, EdgeRanges(archives_[a], object),
+           LargestTemplate(archives_[a], object),
+           SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm)});
     }
   }
 }
@@ -285,7 +288,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
 
     stage_start = Clock::now();
     std::vector<Detection> detections =
-        PosesFromMatches(diagnostics.matches, archive, object, used, options);
+        PosesFromMatches(diagnostics.matches, archive, object, entry.pose_mesh, used, options);
     result.timings.pose_ms += MsSince(stage_start);
     for (Detection& detection : detections) result.detections.push_back(std::move(detection));
   }

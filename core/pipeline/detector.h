@@ -29,8 +29,8 @@ struct DetectorOptions {
   RegionDivisionOptions regions;
   CoarsePositioningOptions coarse;
   MatchOptions match;
-  int max_instances = 1;    // detections kept per object
-  int pose_candidates = 8;  // best raw matches per object that get a pose and a verification
+  int max_instances = 1;     // detections kept per object
+  int pose_candidates = 12;  // best raw matches per object that get a pose and a verification
   IcpOptions icp;
   VerificationOptions verification;
 
@@ -102,6 +102,7 @@ class Detector {
     std::int32_t obj_id = 0;
     std::vector<LayerEdgeRange> edge_ranges;  // per layer
     cv::Size largest_template;                // level-0 px, over all its templates
+    RenderMesh pose_mesh;                     // the mesh ICP and verification render
   };
 
   std::vector<TemplateArchive> archives_;

@@ -167,21 +167,29 @@ TEST(MatcherTest, NonMaximumSuppressionKeepsTheBestPerObjectAndPlace) {
   TemplateRecord first = test::TemplateFromScene(scene, box, 63, 4, rng);
   TemplateRecord twin = first;  // same view again: a duplicate at each place
   twin.id = 2;
-  const auto same_object = Match(prepared, {first, twin});
+  MatchOptions one_per_place;
+  one_per_place.matches_per_location = 1;
+  const auto same_object = Match(prepared, {first, twin}, one_per_place);
   ASSERT_EQ(same_object.size(), 2u);  // one per instance, the lower id wins the tie
   for (const RawMatch& match : same_object) EXPECT_EQ(match.template_id, 2u);
   EXPECT_EQ(cv::Point(same_object[0].x, same_object[0].y), box.tl());
   EXPECT_EQ(cv::Point(same_object[1].x, same_object[1].y), cv::Point(250, 180));
+  // Two per place: both templates at both instances.
+  MatchOptions two_per_place;
+  two_per_place.matches_per_location = 2;
+  EXPECT_EQ(Match(prepared, {first, twin}, two_per_place).size(), 4u);
 
   twin.obj_id = 1;  // another object: never suppressed by the first
-  EXPECT_EQ(Match(prepared, {first, twin}).size(), 4u);
+  EXPECT_EQ(Match(prepared, {first, twin}, one_per_place).size(), 4u);
 
-  MatchOptions wide;
+  MatchOptions wide = one_per_place;
   wide.nms_radius_px = 400;  // everything of one object is one detection
   EXPECT_EQ(Match(prepared, {first}, wide).size(), 1u);
   MatchOptions capped;
   capped.max_matches = 1;
   EXPECT_EQ(Match(prepared, {first, twin}, capped).size(), 1u);
+  one_per_place.matches_per_location = 0;
+  EXPECT_THROW(Match(prepared, {first}, one_per_place), Error);
 }
 
 TEST(MatcherTest, OutputIsSortedAndDeterministic) {
