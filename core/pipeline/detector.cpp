@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include <tbb/parallel_invoke.h>
+
 #include "features/depth_edges.h"
 #include "mesh/vertex_clustering.h"
 #include "pipeline/detection_poses.h"
@@ -230,22 +232,30 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   if (scene_patch) {
     // Region division and coarse positioning need depth only: they run first, so that only
     // the part of the scene they point at is prepared for matching.
-    auto stage_start = Clock::now();
-    const cv::Mat cell_depth_mm = CellMedianDepth(used.depth_mm, options.regions.cell_size_px);
-    result.timings.regions_ms += MsSince(stage_start);
-    stage_start = Clock::now();
-    // Coarse positioning counts depth edges with sensor holes filled; only the threshold
-    // depends on the object.
-    const cv::Mat edge_strength =
-        DepthEdgeStrength(FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px));
-    result.timings.coarse_ms += MsSince(stage_start);
+    // What every object's division and positioning start from, computed side by side: the
+    // per-cell depths, and the depth-edge strength with sensor holes filled (only the edge
+    // threshold depends on the object).
+    cv::Mat cell_depth_mm;
+    cv::Mat edge_strength;
+    tbb::parallel_invoke(
+        [&] {
+          const auto task_start = Clock::now();
+          cell_depth_mm = CellMedianDepth(used.depth_mm, options.regions.cell_size_px);
+          result.timings.regions_ms += MsSince(task_start);
+        },
+        [&] {
+          const auto task_start = Clock::now();
+          edge_strength =
+              DepthEdgeStrength(FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px));
+          result.timings.coarse_ms += MsSince(task_start);
+        });
     std::vector<cv::Size> largest_templates;
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       const ObjectEntry& entry = objects_[i];
       const ArchiveObject& object = archives_[entry.archive].Object(entry.obj_id);
       ObjectDiagnostics& diagnostics = result.diagnostics[i];
       diagnostics.obj_id = entry.obj_id;
-      stage_start = Clock::now();
+      auto stage_start = Clock::now();
       diagnostics.division =
           DivideScene(cell_depth_mm, used.depth_mm.size(), object.layer_depths_mm,
                       object.sphere.radius, options.regions);

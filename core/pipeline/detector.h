@@ -57,6 +57,9 @@ struct Detection {
   Verification verification;
 };
 
+// Wall time per stage, summed over objects. The per-frame parts of region division and coarse
+// positioning run side by side, each counting its own time, so the stages may add up to a little
+// more than the total.
 struct StageTimings {
   double prepare_ms = 0.0;  // quantization, spreading, response maps, linear memories
   double regions_ms = 0.0;  // scene region division

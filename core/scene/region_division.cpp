@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "scene/region_division.h"
 
+#include <tbb/parallel_for.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -124,28 +125,31 @@ cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell) {
   if (cell < 1) throw Error("region division: cell size must be positive");
   const cv::Size cells((depth_mm.cols + cell - 1) / cell, (depth_mm.rows + cell - 1) / cell);
   cv::Mat result(cells, CV_32F, cv::Scalar(0));
-  std::vector<float> values;
-  values.reserve(static_cast<std::size_t>(cell * cell));
-  for (int cy = 0; cy < cells.height; ++cy) {
+  // Cells of 4 px and more are sampled on a 2-px lattice: a quarter of the work for a median
+  // that summarises the same surface.
+  const int stride = cell >= 4 ? 2 : 1;
+  tbb::parallel_for(0, cells.height, [&](int cy) {
+    std::vector<float> values;
+    values.reserve(static_cast<std::size_t>(cell * cell));
     for (int cx = 0; cx < cells.width; ++cx) {
       values.clear();
       const int y_end = std::min(depth_mm.rows, (cy + 1) * cell);
       const int x_end = std::min(depth_mm.cols, (cx + 1) * cell);
-      for (int y = cy * cell; y < y_end; ++y) {
+      int sampled = 0;
+      for (int y = cy * cell; y < y_end; y += stride) {
         const float* row = depth_mm.ptr<float>(y);
-        for (int x = cx * cell; x < x_end; ++x) {
+        for (int x = cx * cell; x < x_end; x += stride) {
+          ++sampled;
           if (row[x] > 0.0f) values.push_back(row[x]);
         }
       }
-      // A cell needs a majority of valid pixels to carry a depth.
-      if (values.size() * 2 < static_cast<std::size_t>((y_end - cy * cell) * (x_end - cx * cell))) {
-        continue;
-      }
+      // A cell needs a majority of valid samples to carry a depth.
+      if (values.size() * 2 < static_cast<std::size_t>(sampled)) continue;
       auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
       std::nth_element(values.begin(), middle, values.end());
       result.at<float>(cy, cx) = *middle;
     }
-  }
+  });
   return result;
 }
 

@@ -49,8 +49,9 @@ RegionDivision DivideScene(const cv::Mat& depth_mm, const std::vector<double>& l
                            double radius_mm, const RegionDivisionOptions& options = {});
 
 // The per-cell median depth DivideScene starts from (CV_32F, 0 where fewer than half the cell's
-// pixels are valid). It depends on the depth map and the cell size only, so a frame searched for
-// several objects computes it once and divides with the overload below.
+// samples are valid; cells of 4 px and more are sampled every second pixel in both directions). It
+// depends on the depth map and the cell size only, so a frame searched for several objects computes
+// it once and divides with the overload below.
 cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell_size_px);
 RegionDivision DivideScene(const cv::Mat& cell_depth_mm, const cv::Size& image_size,
                            const std::vector<double>& layer_depths_mm, double radius_mm,
