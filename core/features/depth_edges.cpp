@@ -16,21 +16,23 @@ namespace layermod {
 namespace {
 
 inline bool ValidDepth(float z) { return z > 0.0f && z < std::numeric_limits<float>::infinity(); }
+// The same as 0 / 1, for combining without branches.
+inline int ValidBit(float z) { return static_cast<int>(ValidDepth(z)); }
 
 // Sobel magnitude / 4 of the 3x3 window with columns left, centre, right of the rows above, at
 // and below; -1 when the window holds an invalid depth. Written without branches so that the
 // compiler vectorises the loop over a row's interior.
 inline float WindowStrength(const float* up, const float* mid, const float* down, int left,
                             int centre, int right) {
-  const bool valid = ValidDepth(up[left]) & ValidDepth(up[centre]) & ValidDepth(up[right]) &
-                     ValidDepth(mid[left]) & ValidDepth(mid[centre]) & ValidDepth(mid[right]) &
-                     ValidDepth(down[left]) & ValidDepth(down[centre]) & ValidDepth(down[right]);
+  const int valid = ValidBit(up[left]) & ValidBit(up[centre]) & ValidBit(up[right]) &
+                    ValidBit(mid[left]) & ValidBit(mid[centre]) & ValidBit(mid[right]) &
+                    ValidBit(down[left]) & ValidBit(down[centre]) & ValidBit(down[right]);
   const float gx =
       (up[right] - up[left]) + 2.0f * (mid[right] - mid[left]) + (down[right] - down[left]);
   const float gy =
       (down[left] - up[left]) + 2.0f * (down[centre] - up[centre]) + (down[right] - up[right]);
   const float strength = 0.25f * std::sqrt(gx * gx + gy * gy);
-  return valid ? strength : -1.0f;
+  return valid != 0 ? strength : -1.0f;
 }
 
 // out[x] = max of in[x - half .. x + half] (clipped to the row) for non-negative values. Windows

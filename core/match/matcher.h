@@ -32,10 +32,10 @@ struct MatchOptions {
   // Top-level positions refined per template, best first: bounds the work on cluttered scenes
   // where thousands of coarse positions pass the threshold.
   int max_candidates_per_template = 64;
-  // Top-level hits refined down the pyramid per call, best top-level similarity first over all
-  // templates: refining costs far more than scoring, and near a part thousands of templates pass
-  // the top-level threshold at several positions.
-  int max_refinements = 1500;
+  // Top-level hits refined down the pyramid per call (per template set in MatchTemplateGroups),
+  // best top-level similarity first over all templates: refining costs far more than scoring,
+  // and near a part thousands of templates pass the top-level threshold at several positions.
+  int max_refinements = 1000;
   SimdPath simd = SimdPath::kAuto;
 
   void Validate() const;  // throws Error naming the bad field
@@ -105,9 +105,10 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      int candidate_radius_px = 0);
 
 // Several template sets, each searched around its own candidate points (nullptr: everywhere),
-// in one call: as MatchTemplates over their union, so the refinement budget
-// (max_refinements), the ranking and the suppression are shared. Scene-Patch matches each kept
-// block's layer templates around that block's points this way.
+// in one call: as MatchTemplates over their union, except that each set has its own refinement
+// budget (max_refinements), so that a set with many strong hits cannot starve another; the
+// ranking and the suppression are shared. Scene-Patch matches each kept block's layer
+// templates around that block's points this way.
 struct TemplateSearch {
   std::span<const TemplateRecord> templates;
   const std::vector<cv::Point>* candidate_points = nullptr;

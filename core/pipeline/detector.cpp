@@ -87,18 +87,20 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const ObjectDiagnostics& diagnostics,
                                       const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
-  std::map<int, std::vector<cv::Point>> points_by_layer;
+  std::vector<std::vector<cv::Point>> points_by_block;
+  std::vector<int> layers;
   for (int index : diagnostics.coarse.kept) {
     const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
-    const int layer =
-        diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index;
+    layers.push_back(
+        diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index);
+    points_by_block.emplace_back();
     for (const DetectionPoint& point : block.points) {
-      if (point.kept) points_by_layer[layer].push_back(point.pixel - offset);
+      if (point.kept) points_by_block.back().push_back(point.pixel - offset);
     }
   }
   std::vector<TemplateSearch> searches;
-  for (const auto& [layer, points] : points_by_layer) {
-    searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points});
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    searches.push_back({archive.TemplatesOf(object.obj_id, layers[i]), &points_by_block[i]});
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.

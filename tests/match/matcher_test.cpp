@@ -321,5 +321,40 @@ TEST(MatcherTest, CandidatePointsOutsideTheImageReachOnlyNearbyTemplates) {
   EXPECT_TRUE(Match(prepared, {record}, {}, &far_outside, 5).empty());
 }
 
+TEST(MatcherTest, TemplateGroupsHaveTheirOwnRefinementBudget) {
+  cv::RNG rng(69);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  std::vector<TemplateRecord> left;
+  std::vector<TemplateRecord> right;
+  for (int i = 0; i < 3; ++i) {
+    left.push_back(test::TemplateFromScene(scene, {10 + 30 * i, 20, 40, 40}, 63,
+                                           static_cast<std::uint32_t>(i), rng));
+    right.push_back(test::TemplateFromScene(scene, {200, 20 + 60 * i, 40, 40}, 63,
+                                            static_cast<std::uint32_t>(10 + i), rng));
+  }
+  MatchOptions options;
+  options.threshold_percent = 95.0f;
+  options.max_refinements = 1;
+  const std::vector<TemplateSearch> searches = {{left, nullptr}, {right, nullptr}};
+  const std::vector<RawMatch> matches = MatchTemplateGroups(prepared, searches, options);
+  // One refinement per group: the best (lowest id among equals) of each.
+  ASSERT_EQ(matches.size(), 2u);
+  std::vector<std::uint32_t> ids = {matches[0].template_id, matches[1].template_id};
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(ids, (std::vector<std::uint32_t>{0, 10}));
+  // The same templates as one set share the single refinement.
+  std::vector<TemplateRecord> all = left;
+  all.insert(all.end(), right.begin(), right.end());
+  EXPECT_EQ(Match(prepared, all, options).size(), 1u);
+  // Candidate points per group: the right set searched only around its second template.
+  const std::vector<cv::Point> near_second = {cv::Point(220, 100)};
+  const std::vector<TemplateSearch> restricted = {{right, &near_second}};
+  options.max_refinements = 10;
+  const std::vector<RawMatch> found = MatchTemplateGroups(prepared, restricted, options, 4);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].template_id, 11u);
+}
+
 }  // namespace
 }  // namespace layermod
