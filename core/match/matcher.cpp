@@ -376,8 +376,9 @@ bool BetterMatch(const Candidate& a, const Candidate& b) {
          std::make_tuple(-b.match.similarity_percent, b.match.template_id, b.match.y, b.match.x);
 }
 
-// Greedy non-maximum suppression: best first, a match is dropped when matches_per_location kept
-// matches of the same object have their centres within the radius.
+// Greedy non-maximum suppression: best first, a match is dropped when a kept match of the same
+// template has its centre within the radius (one template reaches one place from several coarse
+// hits), or matches_per_location kept matches of the same object do.
 std::vector<RawMatch> SuppressDuplicates(std::vector<Candidate> candidates,
                                          const MatchOptions& options) {
   std::sort(candidates.begin(), candidates.end(), BetterMatch);
@@ -385,11 +386,16 @@ std::vector<RawMatch> SuppressDuplicates(std::vector<Candidate> candidates,
   std::vector<const Candidate*> kept;
   for (const Candidate& candidate : candidates) {
     if (static_cast<int>(kept.size()) >= options.max_matches) break;
-    const auto neighbours = std::count_if(kept.begin(), kept.end(), [&](const Candidate* other) {
+    int neighbours = 0;
+    bool same_template_near = false;
+    for (const Candidate* other : kept) {
       const cv::Point2f offset = candidate.centre_px - other->centre_px;
-      return other->obj_id == candidate.obj_id && offset.dot(offset) <= radius_sq;
-    });
-    if (neighbours < options.matches_per_location) kept.push_back(&candidate);
+      if (other->obj_id != candidate.obj_id || offset.dot(offset) > radius_sq) continue;
+      ++neighbours;
+      same_template_near |= other->match.template_id == candidate.match.template_id;
+    }
+    if (!same_template_near && neighbours < options.matches_per_location)
+      kept.push_back(&candidate);
   }
   std::vector<RawMatch> matches;
   matches.reserve(kept.size());

@@ -10,14 +10,15 @@ namespace layermod {
 
 // Coarse positioning by depth edges (paper §3.3, Eq. 2-5, Table 2; SPEC §3.2).
 struct CoarsePositioningOptions {
-  int point_step_px = 8;       // s: spacing of detection points inside a block
-  float lower_factor = 0.8f;   // keep when lower_factor * N_min <= num_i ...
-  float upper_factor = 1.5f;   // ... <= upper_factor * N_max
+  int point_step_px = 8;      // s: spacing of detection points inside a block
+  float lower_factor = 0.8f;  // keep when lower_factor * N_min <= num_i ...
+  float upper_factor = 1.5f;  // ... <= upper_factor * N_max
   // Keep the blocks with most surviving points. The paper keeps 1; in clutter the part's block
-  // is often second or third (other objects of similar size pass the edge test too).
-  int max_blocks = 3;
-  int hole_fill_px = 8;        // sensor holes up to this wide are filled from the far side
-                               // before edges are counted (see FillDepthHolesFromFar)
+  // is often second to fourth (other objects of similar size, the table's far edge pass the edge
+  // test too): 5 found 5 more of 80 targets over 8 objects than 3, for about 5 % more time.
+  int max_blocks = 5;
+  int hole_fill_px = 8;  // sensor holes up to this wide are filled from the far side
+                         // before edges are counted (see FillDepthHolesFromFar)
 
   void Validate() const;  // throws Error
 };

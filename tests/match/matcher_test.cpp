@@ -178,6 +178,11 @@ TEST(MatcherTest, NonMaximumSuppressionKeepsTheBestPerObjectAndPlace) {
   MatchOptions two_per_place;
   two_per_place.matches_per_location = 2;
   EXPECT_EQ(Match(prepared, {first, twin}, two_per_place).size(), 4u);
+  // One template can reach a place from several coarse hits (here: the same record twice); it is
+  // kept there once, however many matches a place may keep.
+  MatchOptions three_per_place;
+  three_per_place.matches_per_location = 3;
+  EXPECT_EQ(Match(prepared, {first, first}, three_per_place).size(), 2u);
 
   twin.obj_id = 1;  // another object: never suppressed by the first
   EXPECT_EQ(Match(prepared, {first, twin}, one_per_place).size(), 4u);
