@@ -15,7 +15,7 @@ struct CoarsePositioningOptions {
   float upper_factor = 1.5f;  // ... <= upper_factor * N_max
   // Keep the blocks with most surviving points. The paper keeps 1; in clutter the part's block
   // is often second to fourth (other objects of similar size, the table's far edge pass the edge
-  // test too): 5 found 5 more of 80 targets over 8 objects than 3, for about 5 % more time.
+  // test too): 5 found 5 more of 80 targets over 8 objects than 3, for about 20 % more time.
   int max_blocks = 5;
   int hole_fill_px = 8;  // sensor holes up to this wide are filled from the far side
                          // before edges are counted (see FillDepthHolesFromFar)
