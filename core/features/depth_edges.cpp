@@ -82,10 +82,6 @@ cv::Mat DepthEdgeMaskFromStrength(const cv::Mat& strength, float threshold_mm) {
 }
 
 cv::Mat DepthEdgeMask(const cv::Mat& depth_mm, float threshold_mm) {
-  if (depth_mm.type() != CV_32F) throw Error("DepthEdgeMask: expected a CV_32F depth map");
-  if (!(threshold_mm > 0.0f) || !std::isfinite(threshold_mm)) {
-    throw Error("DepthEdgeMask: threshold_mm must be positive and finite");
-  }
   return DepthEdgeMaskFromStrength(DepthEdgeStrength(depth_mm), threshold_mm);
 }
 

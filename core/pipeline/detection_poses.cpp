@@ -42,23 +42,6 @@ Detection RefineCandidate(const RawMatch& match, const TemplateArchive& archive,
   return detection;
 }
 
-// The best matches, skipping those of a template already chosen a few pixels away: ICP would
-// take both to the same pose.
-std::vector<RawMatch> DistinctCandidates(const std::vector<RawMatch>& matches, int count) {
-  constexpr int kSamePlacePx = 4;
-  std::vector<RawMatch> chosen;
-  for (const RawMatch& match : matches) {
-    if (static_cast<int>(chosen.size()) == count) break;
-    const bool repeated = std::any_of(chosen.begin(), chosen.end(), [&](const RawMatch& other) {
-      return other.template_id == match.template_id &&
-             std::abs(other.x - match.x) <= kSamePlacePx &&
-             std::abs(other.y - match.y) <= kSamePlacePx;
-    });
-    if (!repeated) chosen.push_back(match);
-  }
-  return chosen;
-}
-
 bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& object) {
   const Eigen::Vector3d centre_a = a.cam_from_model * object.sphere.centre;
   const Eigen::Vector3d centre_b = b.cam_from_model * object.sphere.centre;
@@ -71,11 +54,13 @@ std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,
                                         const RenderMesh& pose_mesh, const Capture& capture,
                                         const DetectorOptions& options) {
-  const std::vector<RawMatch> candidates = DistinctCandidates(matches, options.pose_candidates);
-  // Candidates are refined independently, in parallel (each costs several renders).
-  std::vector<Detection> refined(candidates.size());
-  tbb::parallel_for(std::size_t{0}, candidates.size(), [&](std::size_t i) {
-    refined[i] = RefineCandidate(candidates[i], archive, object, pose_mesh, capture, options);
+  // The best matches (suppression keeps one per template and place) are refined
+  // independently, in parallel: each costs several renders.
+  const std::size_t candidates =
+      std::min(matches.size(), static_cast<std::size_t>(options.pose_candidates));
+  std::vector<Detection> refined(candidates);
+  tbb::parallel_for(std::size_t{0}, candidates, [&](std::size_t i) {
+    refined[i] = RefineCandidate(matches[i], archive, object, pose_mesh, capture, options);
   });
   std::vector<Detection> verified;
   for (Detection& detection : refined) {

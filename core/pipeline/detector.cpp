@@ -129,24 +129,20 @@ cv::Size LargestTemplate(const TemplateArchive& archive, const ArchiveObject& ob
   return largest;
 }
 
-// Scene-Patch matching reads the scene only near the surviving detection points: within a
-// template box of the point, plus the point search radius and a margin for image filtering at
+// Scene-Patch matching reads the scene only near an object's surviving detection points: within
+// a template box of the point, plus the point search radius and a margin for image filtering at
 // the region's border.
-cv::Rect SearchRegion(const std::vector<ObjectDiagnostics>& diagnostics,
-                      const std::vector<cv::Size>& largest_templates,
-                      const DetectorOptions& options) {
+cv::Rect ReachOfKeptPoints(const CoarsePositioning& coarse, const cv::Size& largest_template,
+                           const DetectorOptions& options) {
   constexpr int kFilterMarginPx = 8;
-  cv::Rect region;
-  for (std::size_t i = 0; i < diagnostics.size(); ++i) {
-    const cv::Size box = largest_templates[i];
-    const int reach_x = box.width + options.coarse.point_step_px + kFilterMarginPx;
-    const int reach_y = box.height + options.coarse.point_step_px + kFilterMarginPx;
-    for (const DetectionPoint& point : diagnostics[i].coarse.KeptPoints()) {
-      region |= cv::Rect(point.pixel.x - reach_x, point.pixel.y - reach_y, 2 * reach_x + 1,
-                         2 * reach_y + 1);
-    }
+  const int reach_x = largest_template.width + options.coarse.point_step_px + kFilterMarginPx;
+  const int reach_y = largest_template.height + options.coarse.point_step_px + kFilterMarginPx;
+  cv::Rect reach;
+  for (const DetectionPoint& point : coarse.KeptPoints()) {
+    reach |= cv::Rect(point.pixel.x - reach_x, point.pixel.y - reach_y, 2 * reach_x + 1,
+                      2 * reach_y + 1);
   }
-  return region;
+  return reach;
 }
 
 }  // namespace
@@ -230,13 +226,15 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   if (options.mode == DetectionMode::kColorOnly) used.depth_mm = cv::Mat();
 
   result.diagnostics.resize(objects_.size());
-  cv::Rect search_region(0, 0, used.color.cols, used.color.rows);
+  // Scene-Patch grows it around the points coarse positioning keeps; the other modes search
+  // the whole image.
+  cv::Rect search_region =
+      scene_patch ? cv::Rect() : cv::Rect(0, 0, used.color.cols, used.color.rows);
   if (scene_patch) {
     // Region division and coarse positioning need depth only: they run first, so that only
-    // the part of the scene they point at is prepared for matching.
-    // What every object's division and positioning start from, computed side by side: the
-    // per-cell depths, and the depth-edge strength with sensor holes filled (only the edge
-    // threshold depends on the object).
+    // the part of the scene they point at is prepared for matching. They start from two
+    // per-frame maps, computed side by side: the per-cell depths, and the depth-edge strength
+    // with sensor holes filled (only the edge threshold depends on the object).
     cv::Mat cell_depth_mm;
     cv::Mat edge_strength;
     tbb::parallel_invoke(
@@ -251,12 +249,10 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
               DepthEdgeStrength(FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px));
           result.timings.coarse_ms += MsSince(task_start);
         });
-    std::vector<cv::Size> largest_templates;
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       const ObjectEntry& entry = objects_[i];
       const ArchiveObject& object = archives_[entry.archive].Object(entry.obj_id);
       ObjectDiagnostics& diagnostics = result.diagnostics[i];
-      diagnostics.obj_id = entry.obj_id;
       auto stage_start = Clock::now();
       diagnostics.division =
           DivideScene(cell_depth_mm, used.depth_mm.size(), object.layer_depths_mm,
@@ -270,10 +266,9 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       diagnostics.coarse =
           PositionCoarsely(diagnostics.division, used.depth_mm, edges, used.camera.fx,
                            object.diameter_mm, entry.edge_ranges, options.coarse);
-      largest_templates.push_back(entry.largest_template);
+      search_region |= ReachOfKeptPoints(diagnostics.coarse, entry.largest_template, options);
       result.timings.coarse_ms += MsSince(stage_start);
     }
-    search_region = SearchRegion(result.diagnostics, largest_templates, options);
   }
 
   auto stage_start = Clock::now();

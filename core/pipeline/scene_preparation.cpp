@@ -64,11 +64,12 @@ PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth
                                   const PinholeCamera& camera, const FeatureOptions& features,
                                   const cv::Rect& region, SimdPath simd) {
   const int align = RegionAlignmentPx(features);
-  const cv::Point tl((region.x / align) * align, (region.y / align) * align);
-  const cv::Point br(region.br().x + (align - 1 - (region.br().x + align - 1) % align),
-                     region.br().y + (align - 1 - (region.br().y + align - 1) % align));
-  const cv::Rect aligned = cv::Rect(cv::Point(std::max(tl.x, 0), std::max(tl.y, 0)), br) &
-                           cv::Rect(0, 0, color_bgr.cols, color_bgr.rows);
+  const cv::Rect image(0, 0, color_bgr.cols, color_bgr.rows);
+  const cv::Rect clipped = region & image;
+  const auto up = [align](int value) { return (value + align - 1) / align * align; };
+  const cv::Rect aligned = cv::Rect(cv::Point(clipped.x / align * align, clipped.y / align * align),
+                                    cv::Point(up(clipped.br().x), up(clipped.br().y))) &
+                           image;
   PreparedRegion result;
   if (aligned.empty()) return result;
   result.region_px = aligned;
