@@ -2,11 +2,13 @@
 #include "mesh/ply_header.h"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "util/error.h"
@@ -54,11 +56,24 @@ int TypeBytes(const std::string& type) {
   return 0;
 }
 
-// Reads the header lines; false when the file does not start with the PLY magic line.
+// True for what assimp would read as PLY: a .ply name or contents starting with "ply".
+bool LooksLikePly(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".ply") return true;
+  std::ifstream in(path, std::ios::binary);
+  std::array<char, 3> start{};
+  return in.read(start.data(), start.size()) && std::string_view(start.data(), 3) == "ply";
+}
+
+// Reads the header lines; false when the file is not PLY at all.
 bool ReadHeaderLines(const std::filesystem::path& path, HeaderLines& header) {
+  if (!LooksLikePly(path)) return false;
   std::ifstream in(path, std::ios::binary);
   std::string magic;
-  if (!std::getline(in, magic) || (magic != "ply" && magic != "ply\r")) return false;
+  if (!std::getline(in, magic) || (magic != "ply" && magic != "ply\r")) {
+    throw FormatError(Quoted(path) + ": not a PLY file (its first line must be \"ply\")");
+  }
   std::size_t read = magic.size() + 1;
   for (std::string line; std::getline(in, line);) {
     read += line.size() + 1;

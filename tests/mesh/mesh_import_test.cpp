@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "mesh/mesh_import.h"
+#include "mesh/ply_header.h"
 #include "support/thrown.h"
 
 #include <gmock/gmock.h>
@@ -90,6 +91,18 @@ TEST(MeshImportTest, PlyWithoutEndHeaderIsRefusedBeforeAssimpLoopsOnIt) {
       dir, "open.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n0 0 0\n");
   EXPECT_THAT(ThrownMessage<FormatError>([&] { ImportTriangles(path, {}); }),
               HasSubstr("no end_header"));
+}
+
+TEST(MeshImportTest, PlyWhoseFirstLineIsNotExactlyPlyIsRefusedBeforeAssimpLoopsOnIt) {
+  test::TempDir dir;
+  const std::string body = "format ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n";
+  const fs::path named_ply = WriteFile(dir, "near.ply", "ply!\n" + body);
+  EXPECT_THAT(ThrownMessage<FormatError>([&] { ImportTriangles(named_ply, {}); }),
+              HasSubstr("'" + named_ply.string() + "': not a PLY file"));
+  const fs::path starts_with_ply = WriteFile(dir, "near.mesh", "ply\xff\xff\n" + body);
+  EXPECT_THAT(ThrownMessage<FormatError>([&] { CheckPlyHeader(starts_with_ply, 10); }),
+              HasSubstr("not a PLY file"));
+  EXPECT_NO_THROW(CheckPlyHeader(WriteFile(dir, "part.off", "OFF\n0 0 0\n"), 10));
 }
 
 TEST(MeshImportTest, PlyHeadersAreCheckedForKeywordsTypesAndSizes) {
