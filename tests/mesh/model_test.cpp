@@ -245,7 +245,7 @@ TEST_F(ModelTest, BadContentIsAFormatErrorNamingTheFile) {
     std::string name, text, expected;
   } cases[] = {
       {"empty.ply", "", "empty"},
-      {"garbage.ply", garbage, "cannot read as a mesh"},
+      {"garbage.ply", garbage, "not a PLY file"},
       {"garbage.xyz", garbage, "cannot read as a mesh"},
       {"nan.ply", nan_ply, "non-finite"},
       {"inf.ply", inf_ply, "non-finite"},
