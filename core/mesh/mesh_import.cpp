@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "mesh/mesh_import.h"
 
+#include <unistd.h>
+
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -289,7 +291,8 @@ TriangleSoup ImportTriangles(const fs::path& path, const MeshImportOptions& opti
   }
   const ProcessResult run =
       RunProcess({importer.string(), "--units", options.units == LengthUnit::kMetre ? "m" : "mm",
-                  "--max-triangles", std::to_string(options.max_triangles), "--", path.string()},
+                  "--max-triangles", std::to_string(options.max_triangles), "--parent",
+                  std::to_string(::getpid()), "--", path.string()},
                  options.timeout);
   return SoupFromImporter(run, path, options);
 }

@@ -6,7 +6,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <chrono>
+#include <cstdio>
 #include <fstream>
+#include <sstream>
+#include <thread>
 
 #include "mesh_files.h"
 #include "support/test_paths.h"
@@ -42,6 +48,54 @@ TEST(MeshImportTest, TheHelperIsFoundInTheBuildTree) {
   const fs::path importer = MeshImporterPath();
   ASSERT_FALSE(importer.empty());
   EXPECT_EQ(importer.filename(), kMeshImporterName);
+}
+
+// A flat n x n grid of vertices, 2 (n-1)^2 triangles.
+std::string GridPly(int n) {
+  std::ostringstream vertices, faces;
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) vertices << x << ' ' << y << " 0\n";
+  }
+  for (int y = 0; y + 1 < n; ++y) {
+    for (int x = 0; x + 1 < n; ++x) {
+      const int i = y * n + x;
+      faces << "3 " << i << ' ' << i + 1 << ' ' << i + n << "\n3 " << i + 1 << ' ' << i + n + 1
+            << ' ' << i + n << '\n';
+    }
+  }
+  return test::PlainPly(vertices.str(), n * n, faces.str(), 2 * (n - 1) * (n - 1));
+}
+
+char ProcessState(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return 'X';  // gone
+  const auto paren = line.rfind(')');
+  return paren + 2 < line.size() ? line[paren + 2] : '?';
+}
+
+TEST(MeshImportTest, TheHelperDoesNotOutliveItsCaller) {
+  // The helper's output (about 0.5 MB) goes into a pipe nobody reads, so it blocks writing;
+  // its caller, a shell, exits soon after starting it. The helper must go with it, not block
+  // forever.
+  test::TempDir dir;
+  const fs::path mesh = WriteFile(dir, "grid.ply", GridPly(120));
+  const std::string command =
+      "sh -c '\"$0\" --units mm --max-triangles 100000 --parent $$ -- \"$1\" & echo $!; sleep "
+      "0.3' " +
+      MeshImporterPath().string() + " " + mesh.string();
+  FILE* out = ::popen(command.c_str(), "r");
+  ASSERT_NE(out, nullptr);
+  int pid = 0;
+  ASSERT_EQ(std::fscanf(out, "%d", &pid), 1);
+  char state = ProcessState(pid);
+  for (int i = 0; i < 100 && state != 'X' && state != 'Z'; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    state = ProcessState(pid);
+  }
+  if (state != 'X' && state != 'Z') ::kill(pid, SIGKILL);
+  ::pclose(out);
+  EXPECT_TRUE(state == 'X' || state == 'Z') << "helper " << pid << " still in state " << state;
 }
 
 TEST(MeshImportTest, HelperErrorsKeepTheirTypeAndMessage) {
