@@ -2,7 +2,6 @@
 #include "mesh/ply_header.h"
 
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <fstream>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "util/error.h"
+#include "util/file_names.h"
 #include "util/quoted.h"
 
 namespace layermod {
@@ -56,20 +56,16 @@ int TypeBytes(const std::string& type) {
   return 0;
 }
 
-// True for what assimp would read as PLY: a .ply name or contents starting with "ply".
-bool LooksLikePly(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".ply") return true;
+// Reads the header lines; false when the file is not PLY at all. What assimp would read as
+// PLY (a .ply name, or contents starting with "ply") must have exactly "ply" as its first line.
+bool ReadHeaderLines(const std::filesystem::path& path, HeaderLines& header) {
   std::ifstream in(path, std::ios::binary);
   std::array<char, 3> start{};
-  return in.read(start.data(), start.size()) && std::string_view(start.data(), 3) == "ply";
-}
-
-// Reads the header lines; false when the file is not PLY at all.
-bool ReadHeaderLines(const std::filesystem::path& path, HeaderLines& header) {
-  if (!LooksLikePly(path)) return false;
-  std::ifstream in(path, std::ios::binary);
+  in.read(start.data(), start.size());
+  const bool starts_with_ply = in.gcount() == 3 && std::string_view(start.data(), 3) == "ply";
+  if (!starts_with_ply && LowercaseExtension(path) != ".ply") return false;
+  in.clear();
+  in.seekg(0);
   std::string magic;
   if (!std::getline(in, magic) || (magic != "ply" && magic != "ply\r")) {
     throw FormatError(Quoted(path) + ": not a PLY file (its first line must be \"ply\")");

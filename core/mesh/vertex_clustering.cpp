@@ -2,10 +2,10 @@
 #include "mesh/vertex_clustering.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
-#include <tuple>
 #include <unordered_map>
 
 #include "util/error.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include "util/quoted.h"
 #include "synth/model_library.h"
+#include "util/quoted.h"
 
 #include <tbb/parallel_for.h>
 
@@ -12,6 +12,7 @@
 #include "dataset/bop.h"
 #include "mesh/model.h"
 #include "util/error.h"
+#include "util/file_names.h"
 
 namespace layermod {
 namespace fs = std::filesystem;
@@ -55,10 +56,7 @@ std::map<std::int32_t, fs::path> ModelFilesFor(const fs::path& models,
   if (ids.size() != 1) {
     throw Error("a single model file " + Quoted(models) + " is one object: give one object id");
   }
-  std::string extension = models.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".ply") {
+  if (LowercaseExtension(models) != ".ply") {
     throw Error(Quoted(models) + ": a single model file must be a PLY file (BOP's model format)");
   }
   return {{*ids.begin(), models}};

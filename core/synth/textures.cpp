@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include "util/quoted.h"
 #include "synth/textures.h"
+#include "util/quoted.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include "dataset/bop_images.h"
 #include "geometry/pose.h"
 #include "util/error.h"
+#include "util/file_names.h"
 
 namespace layermod {
 namespace fs = std::filesystem;
@@ -22,9 +23,7 @@ double Uniform(std::mt19937_64& rng, double low, double high) {
 }
 
 bool IsImageFile(const fs::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = LowercaseExtension(path);
   return extension == ".png" || extension == ".jpg" || extension == ".jpeg" || extension == ".bmp";
 }
 
