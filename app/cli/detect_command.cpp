@@ -56,15 +56,17 @@ Capture LoadRequestedCapture(const DetectArgs& args) {
     return Capture{frame.color, frame.depth_mm, frame.camera};
   }
   if (args.color.empty() || args.camera.empty()) {
-    throw Error("give either --bop DIR --scene S --frame ID, or --color C.png --camera camera.json "
-                "[--depth D.png]");
+    throw Error(
+        "give either --bop DIR --scene S --frame ID, or --color C.png --camera camera.json "
+        "[--depth D.png]");
   }
   CaptureFiles files;
   files.color = args.color;
   files.depth = args.depth;
   files.camera = args.camera;
   files.depth_scale = args.depth_scale;
-  files.float_depth_unit = args.float_depth_unit == "m" ? DepthUnit::kMetre : DepthUnit::kMillimetre;
+  files.float_depth_unit =
+      args.float_depth_unit == "m" ? DepthUnit::kMetre : DepthUnit::kMillimetre;
   return LoadCapture(files);
 }
 
@@ -81,18 +83,23 @@ nlohmann::json DetectionJson(const Detection& detection) {
           {"cam_t_m2c", {t.x(), t.y(), t.z()}},
           {"template_id", detection.template_id},
           {"layer_mm", detection.layer_depth_mm},
-          {"icp", {{"rmse_mm", detection.icp.rmse_mm}, {"inlier_ratio", detection.icp.inlier_ratio},
-                   {"iterations", detection.icp.iterations}}},
-          {"verification", {{"depth_inlier_ratio", detection.verification.depth_inlier_ratio},
-                            {"visible_ratio", detection.verification.visible_ratio},
-                            {"color_agreement", detection.verification.color_agreement}}}};
+          {"icp",
+           {{"rmse_mm", detection.icp.rmse_mm},
+            {"inlier_ratio", detection.icp.inlier_ratio},
+            {"iterations", detection.icp.iterations}}},
+          {"verification",
+           {{"depth_inlier_ratio", detection.verification.depth_inlier_ratio},
+            {"depth_fit", detection.verification.depth_fit},
+            {"visible_ratio", detection.verification.visible_ratio},
+            {"color_agreement", detection.verification.color_agreement}}}};
 }
 
 nlohmann::json ResultJson(const DetectionResult& result, DetectionMode mode) {
   nlohmann::json json;
   json["mode"] = std::string(ModeName(mode));
   json["detections"] = nlohmann::json::array();
-  for (const Detection& detection : result.detections) json["detections"].push_back(DetectionJson(detection));
+  for (const Detection& detection : result.detections)
+    json["detections"].push_back(DetectionJson(detection));
   const StageTimings& t = result.timings;
   json["timings_ms"] = {{"prepare", t.prepare_ms}, {"regions", t.regions_ms},
                         {"coarse", t.coarse_ms},   {"match", t.match_ms},
@@ -109,22 +116,24 @@ void WriteStageImages(const fs::path& dir, const Capture& capture, const Detecti
     const ArchiveObject& object = detector.Object(diagnostics.obj_id);
     const std::string prefix = "obj" + std::to_string(diagnostics.obj_id) + "_";
     if (!diagnostics.division.blocks.empty() || !diagnostics.coarse.evaluated.empty()) {
-      WritePng(dir / (prefix + "1_regions.png"), DrawRegionDivision(capture.color, diagnostics, object));
+      WritePng(dir / (prefix + "1_regions.png"),
+               DrawRegionDivision(capture.color, diagnostics, object));
       WritePng(dir / (prefix + "2_coarse.png"), DrawCoarsePositioning(capture.color, diagnostics));
     }
     WritePng(dir / (prefix + "3_matches.png"),
              DrawMatches(capture.color, diagnostics, detector.ArchiveOf(diagnostics.obj_id)));
   }
-  WritePng(dir / "4_poses.png", DrawPoses(capture.color, result.detections, detector, capture.camera));
+  WritePng(dir / "4_poses.png",
+           DrawPoses(capture.color, result.detections, detector, capture.camera));
 }
 
 void PrintDetections(const DetectionResult& result) {
   if (result.detections.empty()) std::printf("no detection\n");
   for (const Detection& d : result.detections) {
     const Eigen::Vector3d& t = d.cam_from_model.t;
-    std::printf("obj %d %-12s score %5.1f%%  t = (%.1f, %.1f, %.1f) mm  layer %.0f mm  template %u\n",
-                d.obj_id, d.name.c_str(), d.score, t.x(), t.y(), t.z(), d.layer_depth_mm,
-                d.template_id);
+    std::printf(
+        "obj %d %-12s score %5.1f%%  t = (%.1f, %.1f, %.1f) mm  layer %.0f mm  template %u\n",
+        d.obj_id, d.name.c_str(), d.score, t.x(), t.y(), t.z(), d.layer_depth_mm, d.template_id);
   }
   const StageTimings& t = result.timings;
   std::printf("time %.1f ms (prepare %.1f, regions %.1f, coarse %.1f, match %.1f, pose %.1f)\n",
@@ -151,7 +160,8 @@ void RunDetect(const DetectArgs& args) {
     WriteFileAtomically(args.json_out, ResultJson(result, options.mode).dump(2) + "\n");
   }
   if (!args.overlay_out.empty()) {
-    WritePng(args.overlay_out, DrawPoses(capture.color, result.detections, detector, capture.camera));
+    WritePng(args.overlay_out,
+             DrawPoses(capture.color, result.detections, detector, capture.camera));
   }
   if (!args.stages_dir.empty()) WriteStageImages(args.stages_dir, capture, result, detector);
 }
@@ -161,9 +171,9 @@ void RunDetect(const DetectArgs& args) {
 void AddDetectCommand(CLI::App& app) {
   auto args = std::make_shared<DetectArgs>();
   CLI::App* command = app.add_subcommand("detect", "Detect objects and estimate their 6D pose");
-  command->add_option("--archive", args->archives, "Template archive(s) (*.layermod)")
-      ->required();
-  command->add_option("--bop", args->bop_dir, "BOP dataset split directory (holding scene folders)");
+  command->add_option("--archive", args->archives, "Template archive(s) (*.layermod)")->required();
+  command->add_option("--bop", args->bop_dir,
+                      "BOP dataset split directory (holding scene folders)");
   command->add_option("--scene", args->scene_id, "BOP scene id");
   command->add_option("--frame", args->frame_id, "BOP image id");
   command->add_option("--color", args->color, "Colour image (PNG/JPEG)");
@@ -171,8 +181,9 @@ void AddDetectCommand(CLI::App& app) {
   command->add_option("--camera", args->camera, "Camera file (BOP camera.json)");
   command->add_option("--depth-scale", args->depth_scale, "16-bit depth value * scale = mm")
       ->capture_default_str();
-  command->add_option("--float-depth-unit", args->float_depth_unit,
-                      "Unit of a 32-bit float depth image: mm or m")
+  command
+      ->add_option("--float-depth-unit", args->float_depth_unit,
+                   "Unit of a 32-bit float depth image: mm or m")
       ->check(CLI::IsMember({"mm", "m"}));
   command->add_option("--mode", args->mode, "scene-patch, exhaustive or color-only")
       ->check(CLI::IsMember({"scene-patch", "exhaustive", "color-only"}))

@@ -67,12 +67,14 @@ std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
     if (detection.verification.accepted) verified.push_back(std::move(detection));
   }
   // Rank by appearance, geometry and colour together: a high LineMOD score on a pose the depth
-  // or the colours contradict is worth less than a slightly lower score they confirm (among the
-  // few templates matched at one place, this picks the right rotation).
+  // or the colours contradict is worth less than a slightly lower score they confirm. Among
+  // the templates matched at one place, ICP brings neighbouring rotations to poses that pass
+  // the inlier test alike; how closely the depth fits (squared, so that it outweighs the few
+  // points of LineMOD score between them) is what picks the right one.
   const bool has_depth = !capture.depth_mm.empty();
   auto rank = [has_depth](const Detection& d) {
-    return d.score * (has_depth ? d.verification.depth_inlier_ratio : 1.0) *
-           d.verification.color_agreement;
+    const double fit = has_depth ? d.verification.depth_fit : 1.0;
+    return d.score * fit * fit * d.verification.color_agreement;
   };
   std::stable_sort(verified.begin(), verified.end(),
                    [&](const Detection& a, const Detection& b) { return rank(a) > rank(b); });

@@ -15,6 +15,7 @@ struct DepthCounts {
   int consistent = 0;
   int occluded = 0;
   int contradicted = 0;
+  double agreement = 0.0;  // sum of max(0, 1 - |difference| / tolerance) over the judged pixels
 };
 
 DepthCounts CompareDepth(const RenderedView& view, const cv::Mat& depth_mm, double tolerance_mm) {
@@ -27,6 +28,7 @@ DepthCounts CompareDepth(const RenderedView& view, const cv::Mat& depth_mm, doub
       const double difference = scene - view.depth_mm.at<float>(y, x);
       if (std::abs(difference) <= tolerance_mm) {
         ++counts.consistent;
+        counts.agreement += 1.0 - std::abs(difference) / tolerance_mm;
       } else if (difference < 0) {
         ++counts.occluded;
       } else {
@@ -88,12 +90,14 @@ Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, con
     const DepthCounts counts = CompareDepth(view, depth_mm, options.depth_tolerance_mm);
     const int judged = counts.consistent + counts.contradicted;
     result.depth_inlier_ratio = judged > 0 ? static_cast<double>(counts.consistent) / judged : 0.0;
+    result.depth_fit = judged > 0 ? counts.agreement / judged : 0.0;
     result.visible_ratio =
         static_cast<double>(counts.consistent + counts.occluded) / result.silhouette_px;
   }
   result.color_agreement = ColorAgreement(view, color_bgr, options.hue_tolerance_deg);
-  const bool depth_ok = !has_depth || (result.depth_inlier_ratio >= options.min_depth_inlier_ratio &&
-                                       result.visible_ratio >= options.min_visible_ratio);
+  const bool depth_ok =
+      !has_depth || (result.depth_inlier_ratio >= options.min_depth_inlier_ratio &&
+                     result.visible_ratio >= options.min_visible_ratio);
   result.accepted = depth_ok && result.color_agreement >= options.min_color_agreement;
   return result;
 }

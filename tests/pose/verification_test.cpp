@@ -11,11 +11,27 @@ namespace {
 TEST(VerificationTest, AcceptsTheTruePose) {
   const Pose truth = test::SamplePose(800.0);
   const test::TestScene scene = test::RenderTestScene(truth);
-  const Verification result = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth,
-                                         scene.depth_mm, scene.color);
+  const Verification result =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, scene.depth_mm, scene.color);
   EXPECT_TRUE(result.accepted);
   EXPECT_GT(result.depth_inlier_ratio, 0.98);
   EXPECT_GT(result.visible_ratio, 0.98);
+  EXPECT_GT(result.depth_fit, 0.95);
+}
+
+TEST(VerificationTest, DepthFitFallsWithTheDistanceToTheTruePose) {
+  // The whole part 5 mm too far: every pixel is still an inlier (tolerance 15 mm), but each
+  // agrees only to 1 - 5/15. Background pixels the shifted silhouette now covers are
+  // contradicted and count 0, so the fit lies a little below.
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const Pose farther = test::Perturb(truth, 0.0, {0, 0, 1}, truth.t.normalized() * 5.0);
+  const Verification result =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), farther, scene.depth_mm, scene.color);
+  EXPECT_TRUE(result.accepted);
+  EXPECT_GT(result.depth_inlier_ratio, 0.9);
+  EXPECT_NEAR(result.depth_fit, 1.0 - 5.0 / 15.0, 0.08);
+  EXPECT_LT(result.depth_fit, result.depth_inlier_ratio - 0.2);
 }
 
 TEST(VerificationTest, RejectsAPoseWhereTheObjectIsNot) {
@@ -33,8 +49,8 @@ TEST(VerificationTest, OccludersAreNotCountedAgainstThePose) {
   test::TestScene scene = test::RenderTestScene(truth);
   // A bar in front of the left half of the image.
   scene.depth_mm(cv::Rect(0, 0, 330, 480)).setTo(500.0f);
-  const Verification result = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth,
-                                         scene.depth_mm, scene.color);
+  const Verification result =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, scene.depth_mm, scene.color);
   EXPECT_GT(result.depth_inlier_ratio, 0.98);  // occluded pixels are neither for nor against
   EXPECT_GT(result.visible_ratio, 0.98);
 }
