@@ -22,9 +22,13 @@ struct EvaluationArgs {
   double min_visib = 0.5;
   double km = 0.1;
   int frames = 0;
+  float edge_upper = CoarsePositioningOptions{}.upper_factor;
 };
 
-// --archive --dataset --scene --targets --min-visib --km --frames.
+// --edge-upper: coarse positioning's upper depth-edge factor (paper Eq. 5), for detect too.
+void AddEdgeUpperOption(CLI::App* command, float& factor);
+
+// --archive --dataset --scene --targets --min-visib --km --frames --edge-upper.
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args);
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args);

@@ -23,6 +23,7 @@ struct EvalRunInfo {
   std::optional<int> scene_id;
   double min_visib_fract = 0.5;
   int max_frames = 0;
+  double edge_upper_factor = 0.0;  // coarse positioning's upper factor (Eq. 5) of the run
   EvalMetricOptions metrics;
 };
 

@@ -12,7 +12,10 @@ namespace layermod {
 struct CoarsePositioningOptions {
   int point_step_px = 8;      // s: spacing of detection points inside a block
   float lower_factor = 0.8f;  // keep when lower_factor * N_min <= num_i ...
-  float upper_factor = 1.5f;  // ... <= upper_factor * N_max
+  // ... <= upper_factor * N_max. The paper's 1.5 rejects parts standing among clutter or
+  // behind an occluder, whose outlines add to num_i: on four synthetic scene sets (330 targets,
+  // four objects) 2.0 found 6 more targets than 1.5 and lost none.
+  float upper_factor = 2.0f;
   // Keep the blocks with most surviving points. The paper keeps 1; in clutter the part's block
   // is often second to fourth (other objects of similar size, the table's far edge pass the edge
   // test too): 5 found 5 more of 80 targets over 8 objects than 3, for about 20 % more time.
