@@ -229,9 +229,11 @@ std::vector<CoarseHit> CoarseHits(const GridSimilarity& grid, float threshold_pe
 // The best position of the window: highest spread score; among equals, the best pixel-exact
 // alignment; then the one nearest the window centre; then the first in scan order.
 std::optional<Refined> RefineInWindow(const TemplateLevel& level, const SceneLevel& scene,
+                                      const TemplateLevelSummary& summary,
                                       const cv::Rect& window_px,
                                       const SimilarityOptions& similarity) {
-  const LocalSimilarity local = ComputeLocalSimilarity(level, scene, window_px, similarity);
+  const LocalSimilarity local =
+      ComputeLocalSimilarity(level, scene, summary, window_px, similarity);
   if (local.window_px.empty() || local.feature_count == 0) return std::nullopt;
   double max_sum = 0;
   cv::minMaxLoc(local.sums, nullptr, &max_sum);
@@ -246,7 +248,7 @@ std::optional<Refined> RefineInWindow(const TemplateLevel& level, const SceneLev
       if (row[c] == best.sum) ties.emplace_back(local.window_px.x + c, local.window_px.y + r);
     }
   }
-  const std::vector<int> exact = ExactAlignmentScores(level, scene, ties);
+  const std::vector<int> exact = ExactAlignmentScores(level, scene, summary, ties);
   std::optional<std::tuple<int, double>> best_key;  // (-exact score, squared distance to centre)
   for (std::size_t i = 0; i < ties.size(); ++i) {
     const cv::Point2d offset = cv::Point2d(ties[i]) - centre;
@@ -259,18 +261,21 @@ std::optional<Refined> RefineInWindow(const TemplateLevel& level, const SceneLev
   return best;
 }
 
-// Refines one coarse hit down the pyramid to level 0.
-std::optional<Refined> RefineHit(const TemplateRecord& record, const PreparedScene& scene, int top,
-                                 const CoarseHit& hit, const SimilarityOptions& options) {
+// Refines one coarse hit down the pyramid to level 0. `summaries`: UsableLevels of the record.
+std::optional<Refined> RefineHit(const TemplateRecord& record,
+                                 const std::vector<TemplateLevelSummary>& summaries,
+                                 const PreparedScene& scene, int top, const CoarseHit& hit,
+                                 const SimilarityOptions& options) {
   const int top_spread = scene.Level(top).spread_px;
   const cv::Rect cell(hit.cell * top_spread, cv::Size(top_spread, top_spread));
   std::optional<Refined> refined =
-      RefineInWindow(record.levels[top], scene.Level(top), cell, options);
+      RefineInWindow(record.levels[top], scene.Level(top), summaries[top], cell, options);
   for (int level = top - 1; level >= 0 && refined; --level) {
     const int spread = scene.Level(level).spread_px;
     const cv::Rect window(refined->position_px * 2 - cv::Point(spread, spread),
                           cv::Size(2 * spread + 2, 2 * spread + 2));
-    refined = RefineInWindow(record.levels[level], scene.Level(level), window, options);
+    refined =
+        RefineInWindow(record.levels[level], scene.Level(level), summaries[level], window, options);
   }
   return refined;
 }
@@ -278,8 +283,9 @@ std::optional<Refined> RefineHit(const TemplateRecord& record, const PreparedSce
 // One template's top-level hits and what refining them needs.
 struct TemplateHits {
   const TemplateRecord* record = nullptr;
-  int top = 0;              // top pyramid level scored
-  int level0_features = 0;  // usable features at level 0
+  int top = 0;                                  // top pyramid level scored
+  int level0_features = 0;                      // usable features at level 0
+  std::vector<TemplateLevelSummary> summaries;  // UsableLevels, levels 0..top
   cv::Point half_box;
   std::vector<CoarseHit> hits;  // best first
 };
@@ -298,7 +304,7 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   TemplateHits result;
   result.record = &record;
   if (record.status == TemplateStatus::kTooFewFeatures) return result;
-  const std::vector<TemplateLevelSummary> levels = UsableLevels(record, scene);
+  std::vector<TemplateLevelSummary> levels = UsableLevels(record, scene);
   if (levels.empty()) return result;
   const int top = static_cast<int>(levels.size()) - 1;
   const SceneLevel& top_level = scene.LinearizedLevel(top);
@@ -309,11 +315,12 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   GridSimilarity grid;
   CandidateCells near;
   if (!area.restricted) {
-    grid = ComputeGridSimilarity(record.levels[top], top_level, cv::Mat(), similarity);
+    grid = ComputeGridSimilarity(record.levels[top], top_level, levels[top], similarity);
   } else {
     near = NearCells(geometry, cells, area);
     if (near.spans.empty()) return result;
-    grid = ComputeGridSimilarityInSpans(record.levels[top], top_level, near.spans, similarity);
+    grid = ComputeGridSimilarityInSpans(record.levels[top], top_level, levels[top], near.spans,
+                                        similarity);
   }
   const auto accept = [&](const cv::Point& cell) {
     return !area.restricted || near.Contains(cell);
@@ -326,6 +333,7 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   for (CoarseHit& hit : result.hits) {
     hit.percent = SimilarityPercent(hit.sum, levels[top].usable_features);
   }
+  if (!result.hits.empty()) result.summaries = std::move(levels);
   return result;
 }
 
@@ -359,7 +367,7 @@ std::optional<Candidate> RefineRankedHit(const TemplateHits& source, const Coars
                                          const PreparedScene& scene, const MatchOptions& options) {
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const std::optional<Refined> refined =
-      RefineHit(*source.record, scene, source.top, hit, similarity);
+      RefineHit(*source.record, source.summaries, scene, source.top, hit, similarity);
   const int min_level0_sum =
       MinimumSumForPercent(options.threshold_percent, source.level0_features);
   if (!refined || refined->sum < min_level0_sum) return std::nullopt;

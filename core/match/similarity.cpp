@@ -33,14 +33,17 @@ bool UseEightBits(Accumulator accumulator, int feature_count) {
 
 // Sums the features' source bytes over the runs. `buffer_size` must cover every run's block
 // rounding (RoundUpToSimdBlock), and the runs' rounded stretches must not overlap.
-std::vector<std::uint16_t> AccumulateRuns(const std::vector<const std::uint8_t*>& sources,
-                                          const std::vector<Run>& runs, int buffer_size,
-                                          const SimilarityOptions& options) {
+// The sums go to `sums` (resized to buffer_size); refinement calls this thousands of times per
+// frame, so the buffers are reused rather than allocated per call.
+void AccumulateRuns(const std::vector<const std::uint8_t*>& sources, const std::vector<Run>& runs,
+                    int buffer_size, const SimilarityOptions& options,
+                    std::vector<std::uint16_t>& sums) {
   const SimdPath path = ResolveSimdPath(options.simd);
   const int count = static_cast<int>(sources.size());
   const bool eight_bit = UseEightBits(options.accumulator, count);
-  std::vector<std::uint16_t> sums(buffer_size, 0);
-  std::vector<std::uint8_t> partial(buffer_size);
+  sums.assign(static_cast<std::size_t>(buffer_size), 0);
+  thread_local std::vector<std::uint8_t> partial;
+  partial.resize(static_cast<std::size_t>(buffer_size));
   const int chunk = eight_bit ? std::max(count, 1) : kMax8BitFeatures;
   for (int first = 0; first < count; first += chunk) {
     std::fill(partial.begin(), partial.end(), 0);
@@ -58,7 +61,6 @@ std::vector<std::uint16_t> AccumulateRuns(const std::vector<const std::uint8_t*>
                           run.length, path);
     }
   }
-  return sums;
 }
 
 // Runs closer than this many cells are merged: computing a short gap costs less than another
@@ -215,7 +217,8 @@ GridSimilarity ScoreGrid(const TemplateLevel& level, const SceneLevel& scene,
                       divider.Quotient(f.x));
   });
   const int buffer_size = runs.back().buffer_offset + RoundUpToSimdBlock(runs.back().length);
-  const std::vector<std::uint16_t> flat = AccumulateRuns(sources, runs, buffer_size, options);
+  thread_local std::vector<std::uint16_t> flat;
+  AccumulateRuns(sources, runs, buffer_size, options, flat);
   for (const GridRowSpan& span : wanted) {
     std::copy_n(
         flat.begin() + static_cast<std::ptrdiff_t>(span.row) * grid_width + span.first_column,
@@ -320,10 +323,31 @@ GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const Sc
   return ScoreGrid(level, scene, SummarizeTemplateLevel(level, scene), spans, options);
 }
 
+GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                                     const TemplateLevelSummary& summary,
+                                     const SimilarityOptions& options) {
+  return ScoreGrid(level, scene, summary, AllCells(GridPositionCount(summary.extent, scene)),
+                   options);
+}
+
+GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,
+                                            const TemplateLevelSummary& summary,
+                                            std::span<const GridRowSpan> spans,
+                                            const SimilarityOptions& options) {
+  return ScoreGrid(level, scene, summary, spans, options);
+}
+
 LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLevel& scene,
                                        const cv::Rect& window_px,
                                        const SimilarityOptions& options) {
-  const TemplateLevelSummary summary = SummarizeTemplateLevel(level, scene);
+  return ComputeLocalSimilarity(level, scene, SummarizeTemplateLevel(level, scene), window_px,
+                                options);
+}
+
+LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                                       const TemplateLevelSummary& summary,
+                                       const cv::Rect& window_px,
+                                       const SimilarityOptions& options) {
   LocalSimilarity result;
   result.window_px = window_px & ValidRect(summary.extent, scene.size_px);
   result.feature_count = summary.usable_features;
@@ -339,19 +363,19 @@ LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLe
   // Each window row gets its own block-rounded stretch of the buffer, so rounding never spills
   // into the next row.
   const int stride = RoundUpToSimdBlock(window.width);
-  std::vector<Run> runs;
-  runs.reserve(window.height);
+  thread_local std::vector<Run> runs;
+  runs.clear();
   for (int r = 0; r < window.height; ++r) {
     runs.push_back(Run{r * stride, static_cast<std::ptrdiff_t>(r * step), window.width});
   }
-  std::vector<const std::uint8_t*> sources;
-  sources.reserve(result.feature_count);
+  thread_local std::vector<const std::uint8_t*> sources;
+  sources.clear();
   ForEachUsableFeature(level, scene, [&](const Feature& f) {
     const cv::Mat& map = scene.responses[ModalityIndex(f.modality)][f.label];
     sources.push_back(map.ptr<std::uint8_t>(window.y + f.y) + window.x + f.x);
   });
-  const std::vector<std::uint16_t> flat =
-      AccumulateRuns(sources, runs, window.height * stride, options);
+  thread_local std::vector<std::uint16_t> flat;
+  AccumulateRuns(sources, runs, window.height * stride, options, flat);
   for (int r = 0; r < window.height; ++r) {
     std::copy_n(flat.begin() + static_cast<std::ptrdiff_t>(r) * stride, window.width,
                 result.sums.ptr<std::uint16_t>(r));
@@ -366,7 +390,13 @@ int ExactAlignmentScore(const TemplateLevel& level, const SceneLevel& scene,
 
 std::vector<int> ExactAlignmentScores(const TemplateLevel& level, const SceneLevel& scene,
                                       const std::vector<cv::Point>& top_left_px) {
-  const cv::Rect valid = ValidRect(SummarizeTemplateLevel(level, scene).extent, scene.size_px);
+  return ExactAlignmentScores(level, scene, SummarizeTemplateLevel(level, scene), top_left_px);
+}
+
+std::vector<int> ExactAlignmentScores(const TemplateLevel& level, const SceneLevel& scene,
+                                      const TemplateLevelSummary& summary,
+                                      const std::vector<cv::Point>& top_left_px) {
+  const cv::Rect valid = ValidRect(summary.extent, scene.size_px);
   for (const cv::Point& position : top_left_px) {
     if (!valid.contains(position)) {
       throw Error("exact alignment asked at (" + std::to_string(position.x) + ", " +

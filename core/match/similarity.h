@@ -86,6 +86,15 @@ struct GridRowSpan {
 GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,
                                             std::span<const GridRowSpan> spans,
                                             const SimilarityOptions& options = {});
+// Both with the level's SummarizeTemplateLevel against this scene level already at hand (the
+// matcher has it from choosing the template's levels): every valid cell, or the spans' cells.
+GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                                     const TemplateLevelSummary& summary,
+                                     const SimilarityOptions& options = {});
+GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,
+                                            const TemplateLevelSummary& summary,
+                                            std::span<const GridRowSpan> spans,
+                                            const SimilarityOptions& options = {});
 
 // Scores at every pixel position of a small window (coarse-to-fine refinement).
 struct LocalSimilarity {
@@ -97,6 +106,12 @@ struct LocalSimilarity {
 LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLevel& scene,
                                        const cv::Rect& window_px,
                                        const SimilarityOptions& options = {});
+// The same with the level's SummarizeTemplateLevel against this scene level already at hand:
+// refinement scores one template in many windows and need not re-read its features each time.
+LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                                       const TemplateLevelSummary& summary,
+                                       const cv::Rect& window_px,
+                                       const SimilarityOptions& options = {});
 
 // Score of the template at `top_left_px` against the UNSPREAD quantized scene: how well its
 // features align pixel-exactly. Within a plateau of equal spread scores (a true placement scores
@@ -106,6 +121,10 @@ int ExactAlignmentScore(const TemplateLevel& level, const SceneLevel& scene,
                         const cv::Point& top_left_px);
 // The same at several positions (the template is checked once).
 std::vector<int> ExactAlignmentScores(const TemplateLevel& level, const SceneLevel& scene,
+                                      const std::vector<cv::Point>& top_left_px);
+// The same with the level's summary at hand (see ComputeLocalSimilarity).
+std::vector<int> ExactAlignmentScores(const TemplateLevel& level, const SceneLevel& scene,
+                                      const TemplateLevelSummary& summary,
                                       const std::vector<cv::Point>& top_left_px);
 
 }  // namespace layermod
