@@ -337,12 +337,12 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   return result;
 }
 
-// The hits refined: per search group (templates [first, last) of `per_template`), the best
-// top-level similarities first, at most max_refinements.
-std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template, std::size_t first,
-                                std::size_t last, const MatchOptions& options) {
+// The hits refined: the best top-level similarities over all templates, at most
+// max_refinements.
+std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template,
+                                const MatchOptions& options) {
   std::vector<RankedHit> ranked;
-  for (std::size_t t = first; t < last; ++t) {
+  for (std::size_t t = 0; t < per_template.size(); ++t) {
     const TemplateHits& source = per_template[t];
     for (std::size_t h = 0; h < source.hits.size(); ++h) {
       ranked.push_back({source.hits[h].percent, source.record->id, t, h});
@@ -499,13 +499,11 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   std::vector<CandidateArea> areas;
   std::vector<std::pair<const TemplateRecord*, const CandidateArea*>> work;
   areas.reserve(searches.size());
-  std::vector<std::size_t> group_ends;
   for (const TemplateSearch& search : searches) {
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
                         : MakeCandidateArea(*search.candidate_points, radius_px, scene));
     for (const TemplateRecord& record : search.templates) work.emplace_back(&record, &areas.back());
-    group_ends.push_back(work.size());
   }
   // Two passes: every template scores its top level; then only the best hits over all
   // templates are refined down the pyramid (refinement costs far more per hit than scoring).
@@ -517,12 +515,7 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                             ScoreTopLevel(*work[i].first, scene, options, *work[i].second);
                       }
                     });
-  std::vector<RankedHit> ranked;
-  for (std::size_t group = 0; group < group_ends.size(); ++group) {
-    const std::vector<RankedHit> best =
-        RankHits(per_template, group == 0 ? 0 : group_ends[group - 1], group_ends[group], options);
-    ranked.insert(ranked.end(), best.begin(), best.end());
-  }
+  const std::vector<RankedHit> ranked = RankHits(per_template, options);
   std::vector<std::optional<Candidate>> refined(ranked.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ranked.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {

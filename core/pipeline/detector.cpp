@@ -81,26 +81,26 @@ void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera
 }
 
 // Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
-// templates, only around its surviving detection points.
+// templates, only around its surviving detection points. Blocks of one layer share a search,
+// so that no template is scored twice.
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const TemplateArchive& archive, const ArchiveObject& object,
                                       const ObjectDiagnostics& diagnostics,
                                       const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
-  std::vector<std::vector<cv::Point>> points_by_block;
-  std::vector<int> layers;
+  std::map<int, std::vector<cv::Point>> points_by_layer;
   for (int index : diagnostics.coarse.kept) {
     const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
-    layers.push_back(
-        diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index);
-    points_by_block.emplace_back();
+    const int layer =
+        diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index;
+    std::vector<cv::Point>& points = points_by_layer[layer];
     for (const DetectionPoint& point : block.points) {
-      if (point.kept) points_by_block.back().push_back(point.pixel - offset);
+      if (point.kept) points.push_back(point.pixel - offset);
     }
   }
   std::vector<TemplateSearch> searches;
-  for (std::size_t i = 0; i < layers.size(); ++i) {
-    searches.push_back({archive.TemplatesOf(object.obj_id, layers[i]), &points_by_block[i]});
+  for (const auto& [layer, points] : points_by_layer) {
+    searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points});
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
