@@ -36,6 +36,7 @@ void RunBenchCommand(const BenchArgs& args) {
   DetectorOptions options;
   options.match.threshold_percent = args.threshold;
   options.coarse.upper_factor = args.edge_upper;
+  options.match.max_refinements = args.refinements;
   options.Validate();
   const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);

@@ -35,6 +35,7 @@ struct DetectArgs {
   int max_instances = 1;
   int blocks = CoarsePositioningOptions{}.max_blocks;
   float edge_upper = CoarsePositioningOptions{}.upper_factor;
+  int refinements = MatchOptions{}.max_refinements;
   float threshold = MatchOptions{}.threshold_percent;
   std::string json_out;
   std::string overlay_out;
@@ -148,6 +149,7 @@ void RunDetect(const DetectArgs& args) {
   options.max_instances = args.max_instances;
   options.coarse.max_blocks = args.blocks;
   options.coarse.upper_factor = args.edge_upper;
+  options.match.max_refinements = args.refinements;
   options.match.threshold_percent = args.threshold;
   options.Validate();
   for (const std::string& path : {args.json_out, args.overlay_out}) {
@@ -198,6 +200,7 @@ void AddDetectCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   AddEdgeUpperOption(command, args->edge_upper);
+  AddRefinementsOption(command, args->refinements);
   command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
       ->check(CLI::Range(1.0f, 100.0f))
       ->capture_default_str();

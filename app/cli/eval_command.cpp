@@ -28,6 +28,7 @@ void RunEval(const EvalArgs& args) {
   DetectorOptions options;
   options.mode = ParseDetectionMode(args.mode);
   options.coarse.upper_factor = args.edge_upper;
+  options.match.max_refinements = args.refinements;
   options.Validate();
   const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);

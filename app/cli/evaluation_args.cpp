@@ -15,6 +15,14 @@ void AddEdgeUpperOption(CLI::App* command, float& factor) {
       ->capture_default_str();
 }
 
+void AddRefinementsOption(CLI::App* command, int& refinements) {
+  command
+      ->add_option("--refinements", refinements,
+                   "Top-level matches refined down the pyramid per object and frame, best first")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args) {
   command->add_option("--archive", args.archives, "Template archive(s) (*.layermod)")->required();
   command->add_option("--dataset", args.dataset, "BOP dataset root or split folder (test/)")
@@ -32,6 +40,7 @@ void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   AddEdgeUpperOption(command, args.edge_upper);
+  AddRefinementsOption(command, args.refinements);
 }
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args) {
@@ -61,6 +70,7 @@ EvalRunInfo BuildRunInfo(const EvaluationArgs& args, const FrameSelectionOptions
   info.min_visib_fract = selection.min_visib_fract;
   info.max_frames = selection.max_frames;
   info.edge_upper_factor = args.edge_upper;
+  info.max_refinements = args.refinements;
   info.metrics = metrics;
   return info;
 }

@@ -23,12 +23,15 @@ struct EvaluationArgs {
   double km = 0.1;
   int frames = 0;
   float edge_upper = CoarsePositioningOptions{}.upper_factor;
+  int refinements = MatchOptions{}.max_refinements;
 };
 
-// --edge-upper: coarse positioning's upper depth-edge factor (paper Eq. 5), for detect too.
+// --edge-upper: coarse positioning's upper depth-edge factor (paper Eq. 5); --refinements: the
+// matcher's refinement budget. For detect too.
 void AddEdgeUpperOption(CLI::App* command, float& factor);
+void AddRefinementsOption(CLI::App* command, int& refinements);
 
-// --archive --dataset --scene --targets --min-visib --km --frames --edge-upper.
+// --archive --dataset --scene --targets --min-visib --km --frames --edge-upper --refinements.
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args);
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args);

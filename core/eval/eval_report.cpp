@@ -69,6 +69,7 @@ nlohmann::json RunInfoJson(const EvalRunInfo& info) {
           {"min_visib_fract", info.min_visib_fract},
           {"max_frames", info.max_frames},
           {"edge_upper_factor", info.edge_upper_factor},
+          {"max_refinements", info.max_refinements},
           {"km", info.metrics.km},
           {"proj2d_threshold_px", info.metrics.proj2d_threshold_px},
           {"min_box_iou", info.metrics.min_box_iou}};
@@ -144,7 +145,8 @@ std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& sum
           (info.scene_id ? " (scene " + std::to_string(*info.scene_id) + ")" : "") + "\n";
   text += "- archives: " + archives + "\n";
   text += "- mode: " + info.mode + "\n";
-  text += "- coarse positioning upper edge factor: " + Fixed(info.edge_upper_factor, 2) + "\n";
+  text += "- coarse positioning upper edge factor: " + Fixed(info.edge_upper_factor, 2) +
+          "; refinement budget: " + std::to_string(info.max_refinements) + "\n";
   if (!info.targets_file.empty()) text += "- targets: `" + info.targets_file + "`\n";
   text += "- correct: ADD (ADD-S for symmetric objects) <= " + Fixed(info.metrics.km, 2) +
           " x diameter; Proj2D <= " + Fixed(info.metrics.proj2d_threshold_px, 1) +

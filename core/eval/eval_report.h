@@ -24,6 +24,7 @@ struct EvalRunInfo {
   double min_visib_fract = 0.5;
   int max_frames = 0;
   double edge_upper_factor = 0.0;  // coarse positioning's upper factor (Eq. 5) of the run
+  int max_refinements = 0;         // the matcher's refinement budget of the run
   EvalMetricOptions metrics;
 };
 
