@@ -20,11 +20,15 @@ DetectionOptionsForm::DetectionOptionsForm(QWidget* parent)
       mode_(new QComboBox),
       threshold_(new QDoubleSpinBox),
       instances_(new QSpinBox),
-      blocks_(new QSpinBox) {
+      blocks_(new QSpinBox),
+      edge_upper_(new QDoubleSpinBox),
+      refinements_(new QSpinBox) {
   mode_->setObjectName("detectionMode");
   threshold_->setObjectName("detectionThreshold");
   instances_->setObjectName("detectionInstances");
   blocks_->setObjectName("detectionBlocks");
+  edge_upper_->setObjectName("detectionEdgeUpper");
+  refinements_->setObjectName("detectionRefinements");
   for (DetectionMode mode : kModes) {
     mode_->addItem(
         QString::fromUtf8(ModeName(mode).data(), static_cast<int>(ModeName(mode).size())));
@@ -38,12 +42,25 @@ DetectionOptionsForm::DetectionOptionsForm(QWidget* parent)
   instances_->setRange(1, 50);
   blocks_->setRange(0, 100);
   blocks_->setSpecialValueText(tr("all"));
+  edge_upper_->setRange(0.8, 100.0);
+  edge_upper_->setDecimals(2);
+  edge_upper_->setSingleStep(0.1);
+  edge_upper_->setSuffix(tr(" × N_max"));
+  edge_upper_->setToolTip(
+      tr("Coarse positioning keeps a point with at most this many times the layer's largest "
+         "template depth-edge count (the paper uses 1.5)"));
+  refinements_->setRange(1, 1000000);
+  refinements_->setSingleStep(100);
+  refinements_->setToolTip(
+      tr("Top-level matches refined down the pyramid per object and frame, best first"));
   auto* layout = new QFormLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addRow(tr("Mode"), mode_);
   layout->addRow(tr("Threshold"), threshold_);
   layout->addRow(tr("Instances"), instances_);
   layout->addRow(tr("Blocks kept"), blocks_);
+  layout->addRow(tr("Edge bound"), edge_upper_);
+  layout->addRow(tr("Refinements"), refinements_);
   SetOptions(DetectorOptions{});
 }
 
@@ -53,6 +70,8 @@ DetectorOptions DetectionOptionsForm::options() const {
   options.match.threshold_percent = static_cast<float>(threshold_->value());
   options.max_instances = instances_->value();
   options.coarse.max_blocks = blocks_->value();
+  options.coarse.upper_factor = static_cast<float>(edge_upper_->value());
+  options.match.max_refinements = refinements_->value();
   return options;
 }
 
@@ -63,6 +82,8 @@ void DetectionOptionsForm::SetOptions(const DetectorOptions& options) {
   threshold_->setValue(options.match.threshold_percent);
   instances_->setValue(options.max_instances);
   blocks_->setValue(options.coarse.max_blocks);
+  edge_upper_->setValue(options.coarse.upper_factor);
+  refinements_->setValue(options.match.max_refinements);
 }
 
 void DetectionOptionsForm::SaveSettings() const {
@@ -71,6 +92,8 @@ void DetectionOptionsForm::SaveSettings() const {
   settings.setValue("detection/threshold", threshold_->value());
   settings.setValue("detection/instances", instances_->value());
   settings.setValue("detection/blocks", blocks_->value());
+  settings.setValue("detection/edge_upper", edge_upper_->value());
+  settings.setValue("detection/refinements", refinements_->value());
 }
 
 void DetectionOptionsForm::RestoreSettings() {
@@ -80,6 +103,13 @@ void DetectionOptionsForm::RestoreSettings() {
   threshold_->setValue(settings.value("detection/threshold").toDouble());
   instances_->setValue(settings.value("detection/instances").toInt());
   blocks_->setValue(settings.value("detection/blocks").toInt());
+  // Settings saved before these fields existed keep the defaults.
+  if (settings.contains("detection/edge_upper")) {
+    edge_upper_->setValue(settings.value("detection/edge_upper").toDouble());
+  }
+  if (settings.contains("detection/refinements")) {
+    refinements_->setValue(settings.value("detection/refinements").toInt());
+  }
 }
 
 }  // namespace layermod::ui

@@ -12,7 +12,8 @@ class QSpinBox;
 namespace layermod::ui {
 
 // The detector settings the preview exposes (the same as `layermod detect`'s flags): mode,
-// similarity threshold, instances per object, blocks kept by coarse positioning.
+// similarity threshold, instances per object, blocks kept by coarse positioning, the edge test's
+// upper bound and the refinement budget.
 class DetectionOptionsForm : public QWidget {
   Q_OBJECT
 
@@ -29,6 +30,8 @@ class DetectionOptionsForm : public QWidget {
   QDoubleSpinBox* threshold_;
   QSpinBox* instances_;
   QSpinBox* blocks_;
+  QDoubleSpinBox* edge_upper_;
+  QSpinBox* refinements_;
 };
 
 }  // namespace layermod::ui

@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include <QCheckBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
 
 #include "dataset/bop_writer.h"
+#include "ui/detection_options_form.h"
 #include "ui/detection_panel.h"
 #include "ui/image_view.h"
 #include "ui/job_runner.h"
@@ -47,6 +50,23 @@ class DetectionPanelTest : public QObject {
              qPrintable(panel->table()->item(0, 0)->text()));
     QVERIFY(window_->findChild<QLabel*>("timingsLabel")->text().contains("total"));
     QVERIFY(window_->findChild<QLabel*>("layerLegend")->text().contains("mm"));
+  }
+
+  void EdgeBoundAndRefinementsReachTheDetectorAndPersist() {
+    DetectionOptionsForm form;
+    QCOMPARE(form.options().coarse.upper_factor, CoarsePositioningOptions{}.upper_factor);
+    QCOMPARE(form.options().match.max_refinements, MatchOptions{}.max_refinements);
+    form.findChild<QDoubleSpinBox*>("detectionEdgeUpper")->setValue(1.5);
+    form.findChild<QSpinBox*>("detectionRefinements")->setValue(500);
+    QCOMPARE(form.options().coarse.upper_factor, 1.5f);
+    QCOMPARE(form.options().match.max_refinements, 500);
+    form.SaveSettings();
+    DetectionOptionsForm restored;
+    restored.RestoreSettings();
+    QCOMPARE(restored.options().coarse.upper_factor, 1.5f);
+    QCOMPARE(restored.options().match.max_refinements, 500);
+    restored.SetOptions(DetectorOptions{});
+    restored.SaveSettings();  // leave the defaults for the other tests
   }
 
   void EachOverlayToggles() {
