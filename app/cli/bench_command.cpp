@@ -35,8 +35,7 @@ void RunBenchCommand(const BenchArgs& args) {
   RequireReleaseBuild();
   DetectorOptions options;
   options.match.threshold_percent = args.threshold;
-  options.coarse.upper_factor = args.edge_upper;
-  options.match.max_refinements = args.refinements;
+  args.tuning.ApplyTo(options);
   options.Validate();
   const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);

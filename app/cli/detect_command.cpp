@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "cli/evaluation_args.h"
+#include "cli/detector_tuning.h"
 #include "cli/image_output.h"
 #include "dataset/bop.h"
 #include "pipeline/capture_io.h"
@@ -34,8 +34,7 @@ struct DetectArgs {
   std::string mode = "scene-patch";
   int max_instances = 1;
   int blocks = CoarsePositioningOptions{}.max_blocks;
-  float edge_upper = CoarsePositioningOptions{}.upper_factor;
-  int refinements = MatchOptions{}.max_refinements;
+  DetectorTuning tuning;
   float threshold = MatchOptions{}.threshold_percent;
   std::string json_out;
   std::string overlay_out;
@@ -148,8 +147,7 @@ void RunDetect(const DetectArgs& args) {
   options.mode = ParseDetectionMode(args.mode);
   options.max_instances = args.max_instances;
   options.coarse.max_blocks = args.blocks;
-  options.coarse.upper_factor = args.edge_upper;
-  options.match.max_refinements = args.refinements;
+  args.tuning.ApplyTo(options);
   options.match.threshold_percent = args.threshold;
   options.Validate();
   for (const std::string& path : {args.json_out, args.overlay_out}) {
@@ -199,8 +197,7 @@ void AddDetectCommand(CLI::App& app) {
   command->add_option("--blocks", args->blocks, "Scene blocks kept by coarse positioning (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  AddEdgeUpperOption(command, args->edge_upper);
-  AddRefinementsOption(command, args->refinements);
+  AddDetectorTuningOptions(command, args->tuning);
   command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
       ->check(CLI::Range(1.0f, 100.0f))
       ->capture_default_str();

@@ -27,8 +27,7 @@ struct EvalArgs : EvaluationArgs {
 void RunEval(const EvalArgs& args) {
   DetectorOptions options;
   options.mode = ParseDetectionMode(args.mode);
-  options.coarse.upper_factor = args.edge_upper;
-  options.match.max_refinements = args.refinements;
+  args.tuning.ApplyTo(options);
   options.Validate();
   const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);

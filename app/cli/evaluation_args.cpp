@@ -6,23 +6,6 @@
 
 namespace layermod::cli {
 
-void AddEdgeUpperOption(CLI::App* command, float& factor) {
-  command
-      ->add_option("--edge-upper", factor,
-                   "Coarse positioning keeps a point with at most this many times the layer's "
-                   "largest template depth-edge count (the paper uses 1.5)")
-      ->check(CLI::Range(0.8f, 100.0f))
-      ->capture_default_str();
-}
-
-void AddRefinementsOption(CLI::App* command, int& refinements) {
-  command
-      ->add_option("--refinements", refinements,
-                   "Top-level matches refined down the pyramid per object and frame, best first")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-}
-
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args) {
   command->add_option("--archive", args.archives, "Template archive(s) (*.layermod)")->required();
   command->add_option("--dataset", args.dataset, "BOP dataset root or split folder (test/)")
@@ -39,8 +22,7 @@ void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args) {
   command->add_option("--frames", args.frames, "At most this many frames (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  AddEdgeUpperOption(command, args.edge_upper);
-  AddRefinementsOption(command, args.refinements);
+  AddDetectorTuningOptions(command, args.tuning);
 }
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args) {
@@ -69,8 +51,8 @@ EvalRunInfo BuildRunInfo(const EvaluationArgs& args, const FrameSelectionOptions
   info.scene_id = selection.scene_id;
   info.min_visib_fract = selection.min_visib_fract;
   info.max_frames = selection.max_frames;
-  info.edge_upper_factor = args.edge_upper;
-  info.max_refinements = args.refinements;
+  info.edge_upper_factor = args.tuning.edge_upper;
+  info.max_refinements = args.tuning.refinements;
   info.metrics = metrics;
   return info;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/detector_tuning.h"
 #include "eval/eval_frames.h"
 #include "eval/eval_report.h"
 #include "eval/pose_scoring.h"
@@ -22,14 +23,8 @@ struct EvaluationArgs {
   double min_visib = 0.5;
   double km = 0.1;
   int frames = 0;
-  float edge_upper = CoarsePositioningOptions{}.upper_factor;
-  int refinements = MatchOptions{}.max_refinements;
+  DetectorTuning tuning;
 };
-
-// --edge-upper: coarse positioning's upper depth-edge factor (paper Eq. 5); --refinements: the
-// matcher's refinement budget. For detect too.
-void AddEdgeUpperOption(CLI::App* command, float& factor);
-void AddRefinementsOption(CLI::App* command, int& refinements);
 
 // --archive --dataset --scene --targets --min-visib --km --frames --edge-upper --refinements.
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args);

@@ -309,9 +309,8 @@ cv::Size GridPositionCount(const cv::Size& template_extent, const SceneLevel& sc
 GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLevel& scene,
                                      const cv::Mat& cell_mask, const SimilarityOptions& options) {
   const TemplateLevelSummary summary = SummarizeTemplateLevel(level, scene);
-  const cv::Size cells = GridPositionCount(summary.extent, scene);
-  if (cell_mask.empty()) return ScoreGrid(level, scene, summary, AllCells(cells), options);
-  if (cell_mask.size() != cells || cell_mask.type() != CV_8UC1) {
+  if (cell_mask.empty()) return ComputeGridSimilarity(level, scene, summary, options);
+  if (cell_mask.size() != GridPositionCount(summary.extent, scene) || cell_mask.type() != CV_8UC1) {
     throw Error("grid similarity mask must be CV_8UC1 of the grid position count");
   }
   return ScoreGrid(level, scene, summary, MaskSpans(cell_mask), options);
@@ -320,7 +319,8 @@ GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLeve
 GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,
                                             std::span<const GridRowSpan> spans,
                                             const SimilarityOptions& options) {
-  return ScoreGrid(level, scene, SummarizeTemplateLevel(level, scene), spans, options);
+  return ComputeGridSimilarityInSpans(level, scene, SummarizeTemplateLevel(level, scene), spans,
+                                      options);
 }
 
 GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLevel& scene,
