@@ -2,7 +2,7 @@
 #pragma once
 
 // `layermod bench`: Scene-Patch, exhaustive matching and OpenCV's cv::linemod on the same
-// frames with the same templates, side by side in one run (SPEC §5).
+// frames with the same templates, side by side in one run (paper §4.3; docs/RESULTS.md).
 
 #include <cstddef>
 #include <filesystem>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Depth edges for coarse positioning (SPEC §3.2, paper §3.3, Eq. 5).
+// Depth edges for coarse positioning (paper §3.3: Sobel on depth above 30 % of eta, Eq. 5).
 #pragma once
 
 #include <opencv2/core.hpp>

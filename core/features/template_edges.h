@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Depth-edge counts of templates, which coarse positioning compares with scene patches
-// (SPEC §3.2, paper §3.3, Eq. 5).
+// (paper §3.3: N_max and N_min of Table 2 and Eq. 5).
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Stage 5 of LineMOD matching (PAMI 2012, §2.6-3): templates against a prepared scene, coarse to
 // fine over the pyramid, optionally only around given candidate points (the Scene-Patch
-// invocation, SPEC §3.3), then non-maximum suppression.
+// invocation, paper §3.4), then non-maximum suppression.
 #pragma once
 
 #include <array>

@@ -8,7 +8,7 @@
 
 namespace layermod {
 
-// Coarse positioning by depth edges (paper §3.3, Eq. 2-5, Table 2; SPEC §3.2).
+// Coarse positioning by depth edges (paper §3.3, Eq. 2-5, Table 2; docs/ARCHITECTURE.md).
 struct CoarsePositioningOptions {
   int point_step_px = 8;      // s: spacing of detection points inside a block
   float lower_factor = 0.8f;  // keep when lower_factor * N_min <= num_i ...

@@ -6,7 +6,7 @@
 
 namespace layermod {
 
-// Scene region division (paper §3.2, SPEC §3.1), computed on square cells for speed.
+// Scene region division (paper §3.2, Eq. 1), computed on square cells for speed.
 struct RegionDivisionOptions {
   int cell_size_px = 8;     // depth is summarised per cell (median of valid pixels)
   int seed_step_cells = 3;  // seeds on a regular grid of cells

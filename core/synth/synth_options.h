@@ -49,7 +49,8 @@ struct SynthOptions {
   // Distance from the camera to the target's circumscribing-sphere centre.
   double dmin_mm = 650.0;
   double dmax_mm = 1150.0;
-  // Camera on the upper hemisphere of the table (SPEC 2.2's evaluation envelope).
+  // Camera on the upper hemisphere of the table (the evaluation envelope; training covers it
+  // with TrainingProfile::DefaultEnvelopeViews).
   double elevation_min_deg = 10.0;
   double elevation_max_deg = 88.0;
   double roll_max_deg = 45.0;

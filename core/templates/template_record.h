@@ -27,7 +27,7 @@ struct TemplateRecord {
   cv::Rect bbox_px;                      // level-0 template box in the training camera's pixels
   cv::Point2f centre_offset_px;          // projected sphere centre relative to bbox_px.tl()
   float centre_minus_surface_mm = 0.0f;  // sphere centre depth minus median surface depth
-  std::int32_t depth_edge_count = 0;     // coarse-positioning count (SPEC §3.2)
+  std::int32_t depth_edge_count = 0;     // coarse-positioning count (paper §3.3, Table 2)
   TemplateStatus status = TemplateStatus::kOk;
   std::vector<TemplateLevel> levels;  // pyramid, level 0 first
 

@@ -19,7 +19,7 @@ struct TrainingProfile {
 
   void Validate() const;  // throws Error naming the bad field
 
-  // Covers the evaluation envelope (SPEC §2.2): upper hemisphere 0..90 deg evenly sampled,
+  // Covers the evaluation envelope (SynthOptions): upper hemisphere 0..90 deg evenly sampled,
   // in-plane roll -45..45 deg.
   static ViewSamplingOptions DefaultEnvelopeViews();
 };

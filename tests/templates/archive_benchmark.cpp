@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Archive write/load speed and size for a realistic template count (SPEC §2.5: load 20k
+// Archive write/load speed and size for a realistic template count (the load target: 20k
 // templates in well under a second). On a busy machine run
 //   layermod_archive_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // and read the "_min" rows.
