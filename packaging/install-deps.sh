@@ -10,6 +10,9 @@ BUILD_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libtbb-dev libzip-dev libdeflate-dev zlib1g-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
 )
+PYTHON_PACKAGES=(
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
+)
 GUI_PACKAGES=(
   qtbase5-dev libqt5opengl5-dev libvtk9-dev libvtk9-qt-dev
   xvfb xauth libgl1-mesa-dri
@@ -19,7 +22,7 @@ TOOL_PACKAGES=(
 )
 
 missing=()
-for pkg in "${BUILD_PACKAGES[@]}" "${GUI_PACKAGES[@]}" "${TOOL_PACKAGES[@]}"; do
+for pkg in "${BUILD_PACKAGES[@]}" "${PYTHON_PACKAGES[@]}" "${GUI_PACKAGES[@]}" "${TOOL_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' || missing+=("$pkg")
 done
 
