@@ -40,7 +40,7 @@ struct Refined {
 
 // Where the candidate points restrict the search: the level-0 pixels within the radius of some
 // point ("disks"), box-dilated once per call so that one lookup tells whether a template's
-// top-level cell comes near a point (see CellReach).
+// top-level cell comes near a point (see Reach below).
 struct CandidateArea {
   bool restricted = false;  // false: every position is searched
   // Per top-level cell span (level-0 pixels per cell): reach(q - origin) != 0 iff some disk

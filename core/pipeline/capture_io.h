@@ -12,7 +12,7 @@ enum class DepthUnit { kMillimetre, kMetre };
 struct CaptureFiles {
   std::filesystem::path color;   // 8-bit colour (or grey) PNG/JPEG
   std::filesystem::path depth;   // 16-bit PNG in mm (scaled by depth_scale), or a 32-bit float
-                                 // image (TIFF/EXR) when depth_unit says metres; may be empty
+                                 // image (TIFF/EXR) in float_depth_unit (mm or m); may be empty
   std::filesystem::path camera;  // BOP camera.json
   double depth_scale = 1.0;      // 16-bit value * depth_scale = mm
   DepthUnit float_depth_unit = DepthUnit::kMillimetre;  // unit of float depth images

@@ -18,8 +18,8 @@ PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
 // The same for a part of the capture only: `region` (level-0 pixels) is grown to the alignment
 // of RegionAlignmentPx and clipped to the image, then prepared as if it were the whole image,
 // with the normals computed for its true place in the camera. Matches found in it are at
-// `offset_px` from the capture's pixels. Away from its border (a few pixels of image filtering)
-// every level is the same as the whole capture's.
+// `region_px.tl()` from the capture's pixels. Away from its border (a few pixels of image
+// filtering) every level is the same as the whole capture's.
 struct PreparedRegion {
   PreparedScene scene;
   cv::Rect region_px;  // the part prepared; empty when `region` missed the image
