@@ -14,12 +14,16 @@
 namespace layermod::ui {
 namespace {
 
+// Two columns of boxes must fit a ~370 px dock.
+constexpr int kBoxMinWidthPx = 70;
+
 QDoubleSpinBox* PixelBox(const char* name) {
   auto* box = new QDoubleSpinBox;
   box->setObjectName(name);
   box->setRange(0.0, 100000.0);
   box->setDecimals(2);
   box->setSuffix(" px");
+  box->setMinimumWidth(kBoxMinWidthPx);
   return box;
 }
 
@@ -28,6 +32,7 @@ QSpinBox* SizeBox(const char* name) {
   box->setObjectName(name);
   box->setRange(1, 16384);
   box->setSuffix(" px");
+  box->setMinimumWidth(kBoxMinWidthPx);
   return box;
 }
 

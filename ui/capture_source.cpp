@@ -2,6 +2,8 @@
 #include "ui/capture_source.h"
 
 #include <QObject>
+#include <algorithm>
+#include <iterator>
 
 #include "dataset/bop.h"
 #include "pipeline/capture_io.h"
@@ -26,17 +28,27 @@ QString CaptureSource::Describe() const {
   return QStringLiteral("“%1”").arg(color);
 }
 
-Capture LoadCaptureSource(const CaptureSource& source) {
+LoadedCapture LoadCaptureSource(const CaptureSource& source) {
   if (source.is_bop()) {
     const BopScene scene = FindScene(source.bop_dir.toStdString(), source.scene_id);
     BopFrame frame = LoadBopFrame(scene, source.frame_id);
-    return Capture{std::move(frame.color), std::move(frame.depth_mm), frame.camera};
+    return {Capture{std::move(frame.color), std::move(frame.depth_mm), frame.camera},
+            scene.image_ids};
   }
   CaptureFiles files;
   files.color = source.color.toStdString();
   files.depth = source.depth.toStdString();
   files.camera = source.camera.toStdString();
-  return LoadCapture(files);
+  return {LoadCapture(files), {}};
+}
+
+int NeighbourFrame(const std::vector<int>& frame_ids, int frame_id, int step) {
+  if (step > 0) {
+    const auto next = std::upper_bound(frame_ids.begin(), frame_ids.end(), frame_id);
+    return next == frame_ids.end() ? -1 : *next;
+  }
+  const auto first_not_below = std::lower_bound(frame_ids.begin(), frame_ids.end(), frame_id);
+  return first_not_below == frame_ids.begin() ? -1 : *std::prev(first_not_below);
 }
 
 }  // namespace layermod::ui

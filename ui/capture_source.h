@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QString>
+#include <vector>
 
 #include "pipeline/detector.h"
 
@@ -22,8 +23,17 @@ struct CaptureSource {
   QString Describe() const;
 };
 
+struct LoadedCapture {
+  Capture capture;
+  std::vector<int> scene_frame_ids;  // a BOP frame's scene: its image ids, ascending
+};
+
 // Reads the frame (runs on the worker thread). Throws the core's IoError/FormatError naming the
 // file, or Error for a scene or frame the dataset does not have.
-Capture LoadCaptureSource(const CaptureSource& source);
+LoadedCapture LoadCaptureSource(const CaptureSource& source);
+
+// The frame after (`step` > 0) or before (`step` < 0) `frame_id` among `frame_ids` (ascending);
+// -1 when there is none.
+int NeighbourFrame(const std::vector<int>& frame_ids, int frame_id, int step);
 
 }  // namespace layermod::ui

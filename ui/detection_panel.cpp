@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 
 #include "pipeline/overlays.h"
+#include "ui/capture_dialog.h"
 #include "ui/detection_options_form.h"
 #include "ui/detection_table.h"
 #include "ui/image_convert.h"
@@ -32,11 +33,8 @@
 namespace layermod::ui {
 namespace {
 
-constexpr int kControlsWidthPx = 370;
-
-QString ImageFileFilter() {
-  return QObject::tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.exr);;All files (*)");
-}
+constexpr int kControlsWidthPx = 330;
+constexpr int kControlsMinWidthPx = 220;
 
 // One line of swatches per object, wrapping: "bracket: ■ 0: 633  ■ 1: 700 … mm".
 QString LegendHtml(const ArchiveObject& object) {
@@ -73,23 +71,16 @@ DetectionPanel::DetectionPanel(StudioSession* session, JobRunner* runner, QWidge
       image_(new ImageView),
       table_(new QTableWidget),
       timings_(new QLabel) {
-  auto* controls = new QWidget;
-  auto* controls_layout = new QVBoxLayout(controls);
-  controls_layout->setContentsMargins(0, 0, 0, 0);
-  controls_layout->addWidget(BuildCaptureBox());
-  controls_layout->addWidget(BuildOverlayBox());
-  controls_layout->addWidget(BuildDetectBox());
-  controls_layout->addStretch();
-  // Scrolls rather than clipping when the window is short.
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(controls);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setFixedWidth(kControlsWidthPx + scroll->verticalScrollBar()->sizeHint().width());
+  auto* splitter = new QSplitter(Qt::Horizontal);
+  splitter->setObjectName("detectionSplitter");
+  splitter->addWidget(BuildControls());
+  splitter->addWidget(BuildResultsArea());
+  splitter->setStretchFactor(1, 1);
+  splitter->setCollapsible(0, false);
+  splitter->setSizes({kControlsWidthPx, 1000});
   auto* layout = new QHBoxLayout(this);
-  layout->addWidget(scroll);
-  layout->addWidget(BuildResultsArea(), 1);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->addWidget(splitter);
 
   options_->RestoreSettings();
   QSettings settings;
@@ -113,16 +104,42 @@ DetectionPanel::~DetectionPanel() {
   options_->SaveSettings();
 }
 
+QWidget* DetectionPanel::BuildControls() {
+  auto* controls = new QWidget;
+  auto* controls_layout = new QVBoxLayout(controls);
+  controls_layout->setContentsMargins(0, 0, 0, 0);
+  // Capture and Detect first, so both stay in sight on a short screen; the settings follow.
+  controls_layout->addWidget(BuildCaptureBox());
+  controls_layout->addWidget(BuildDetectBox());
+  controls_layout->addWidget(BuildOverlayBox());
+  auto* settings_box = new QGroupBox(tr("Detection settings"));
+  (new QVBoxLayout(settings_box))->addWidget(options_);
+  controls_layout->addWidget(settings_box);
+  controls_layout->addStretch();
+  // Scrolls rather than clipping when the window is short.
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(controls);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(kControlsMinWidthPx);
+  return scroll;
+}
+
 QWidget* DetectionPanel::BuildCaptureBox() {
   auto* box = new QGroupBox(tr("Capture"));
   bop_dir_->setObjectName("bopDir");
   bop_dir_->setPlaceholderText(tr("BOP split folder (holding 000001/ …)"));
+  scene_->setObjectName("sceneBox");
+  frame_->setObjectName("frameBox");
   scene_->setRange(0, 999999);
   frame_->setRange(0, 999999);
   auto* browse = new QPushButton(tr("Browse…"));
   auto* load = new QPushButton(tr("Load frame"));
   load->setObjectName("loadFrameButton");
-  auto* files = new QPushButton(tr("Colour + depth + camera…"));
+  auto* files = new QPushButton(tr("Open capture files…"));
+  files->setToolTip(tr("Colour image, depth PNG and camera.json in one dialog"));
+  load->setToolTip(tr("Enter in the folder, scene or frame box loads too; PgUp/PgDn step frames"));
   capture_label_->setObjectName("captureLabel");
   capture_label_->setWordWrap(true);
   auto* dir_row = new QHBoxLayout;
@@ -140,10 +157,13 @@ QWidget* DetectionPanel::BuildCaptureBox() {
   layout->addWidget(files);
   layout->addWidget(capture_label_);
   connect(browse, &QPushButton::clicked, this, &DetectionPanel::OpenBopFrameDialog);
-  connect(load, &QPushButton::clicked, this, [this] {
-    if (bop_dir_->text().isEmpty()) return OpenBopFrameDialog();
-    OpenCapture({bop_dir_->text(), scene_->value(), frame_->value(), {}, {}, {}});
-  });
+  connect(load, &QPushButton::clicked, this, &DetectionPanel::LoadFrameFromForm);
+  connect(bop_dir_, &QLineEdit::returnPressed, this, &DetectionPanel::LoadFrameFromForm);
+  // A spin box's Enter reaches its line edit as returnPressed.
+  for (QSpinBox* spin : {scene_, frame_}) {
+    connect(spin->findChild<QLineEdit*>(), &QLineEdit::returnPressed, this,
+            &DetectionPanel::LoadFrameFromForm);
+  }
   connect(files, &QPushButton::clicked, this, &DetectionPanel::OpenCaptureFilesDialog);
   return box;
 }
@@ -154,15 +174,15 @@ QWidget* DetectionPanel::BuildDetectBox() {
   archive_label_->setWordWrap(true);
   auto* open_archive = new QPushButton(tr("Open archive…"));
   detect_->setObjectName("detectButton");
+  detect_->setToolTip(tr("Detect the template set's objects in the capture (Ctrl+D)"));
   detect_on_load_->setObjectName("detectOnLoad");
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(open_archive);
   buttons->addWidget(detect_);
   auto* layout = new QVBoxLayout(box);
   layout->addWidget(archive_label_);
-  layout->addWidget(options_);
-  layout->addWidget(detect_on_load_);
   layout->addLayout(buttons);
+  layout->addWidget(detect_on_load_);
   connect(open_archive, &QPushButton::clicked, this, &DetectionPanel::OpenArchiveRequested);
   return box;
 }
@@ -226,14 +246,29 @@ void DetectionPanel::OpenBopFrameDialog() {
 }
 
 void DetectionPanel::OpenCaptureFilesDialog() {
-  const QString color = AskOpenPath(this, "capture", tr("Colour image"), ImageFileFilter());
-  if (color.isEmpty()) return;
-  const QString depth = AskOpenPath(
-      this, "capture", tr("Depth image (16-bit PNG, mm; Cancel: none)"), ImageFileFilter());
-  const QString camera =
-      AskOpenPath(this, "camera", tr("Camera (BOP camera.json)"), JsonFileFilter());
-  if (camera.isEmpty()) return;
-  OpenCapture({{}, 0, 0, color, depth, camera});
+  CaptureDialog dialog(this);
+  if (dialog.exec() == QDialog::Accepted) OpenCapture(dialog.source());
+}
+
+void DetectionPanel::LoadFrameFromForm() {
+  if (bop_dir_->text().isEmpty()) return OpenBopFrameDialog();
+  OpenCapture({bop_dir_->text(), scene_->value(), frame_->value(), {}, {}, {}});
+}
+
+int DetectionPanel::frame_in_form() const { return frame_->value(); }
+
+bool DetectionPanel::StepFrame(int step) {
+  if (!can_step_frames()) return false;
+  const int next = NeighbourFrame(frame_ids_, frame_->value(), step);
+  if (next < 0) return false;
+  // The form shows the target at once, so repeated steps go on from it.
+  frame_->setValue(next);
+  OpenCapture({source_.bop_dir, source_.scene_id, next, {}, {}, {}});
+  return true;
+}
+
+bool DetectionPanel::can_detect() const {
+  return !runner_->busy() && capture_ != nullptr && session_->archive() != nullptr;
 }
 
 void DetectionPanel::OpenBopFolder(const QString& split_dir) {
@@ -241,7 +276,13 @@ void DetectionPanel::OpenBopFolder(const QString& split_dir) {
 }
 
 void DetectionPanel::OpenCapture(const CaptureSource& source) {
-  RunWhenFree([this, source] { return StartLoad(source); });
+  queued_capture_ = source;
+  RunWhenFree([this] {
+    if (!queued_capture_.has_value()) return false;  // a later request took it already
+    const CaptureSource next = *queued_capture_;
+    queued_capture_.reset();
+    return StartLoad(next);
+  });
 }
 
 bool DetectionPanel::Detect() {
@@ -268,14 +309,19 @@ void DetectionPanel::RunPending() {
 bool DetectionPanel::StartLoad(const CaptureSource& source) {
   return runner_->Start(
       tr("Open capture %1").arg(source.Describe()), [this, source](const JobControl&) {
-        auto capture = std::make_shared<const Capture>(LoadCaptureSource(source));
-        return JobRunner::Commit([this, source, capture] { ShowCapture(source, capture); });
+        LoadedCapture loaded = LoadCaptureSource(source);
+        auto capture = std::make_shared<const Capture>(std::move(loaded.capture));
+        return JobRunner::Commit([this, source, capture, ids = std::move(loaded.scene_frame_ids)] {
+          ShowCapture(source, capture, ids);
+        });
       });
 }
 
 void DetectionPanel::ShowCapture(const CaptureSource& source,
-                                 std::shared_ptr<const Capture> capture) {
+                                 std::shared_ptr<const Capture> capture,
+                                 std::vector<int> frame_ids) {
   source_ = source;
+  frame_ids_ = std::move(frame_ids);
   capture_ = std::move(capture);
   result_ = nullptr;
   result_detector_ = nullptr;
@@ -286,7 +332,11 @@ void DetectionPanel::ShowCapture(const CaptureSource& source,
     settings.setValue("detection/frame", source.frame_id);
     bop_dir_->setText(source.bop_dir);
     scene_->setValue(source.scene_id);
-    frame_->setValue(source.frame_id);
+    // A step already queued further shows its own target.
+    if (!queued_capture_.has_value()) frame_->setValue(source.frame_id);
+  } else {
+    // The files do not come from the folder: showing it would misname the capture.
+    bop_dir_->clear();
   }
   capture_label_->setText(tr("%1<br>%2 × %3 px, %4")
                               .arg(source.Describe().toHtmlEscaped())
@@ -298,7 +348,11 @@ void DetectionPanel::ShowCapture(const CaptureSource& source,
   RefreshImage();
   UpdateState();
   emit CaptureOpened();
-  if (detect_on_load_->isChecked() && session_->archive() != nullptr) Detect();
+  // While frames are stepped through quickly, only the last one is detected.
+  if (detect_on_load_->isChecked() && session_->archive() != nullptr &&
+      !queued_capture_.has_value()) {
+    Detect();
+  }
 }
 
 bool DetectionPanel::StartDetect() {
@@ -392,7 +446,8 @@ void DetectionPanel::UpdateState() {
       archive == nullptr
           ? tr("No template set: train one or open an archive.")
           : tr("Templates: %1, %2 templates").arg(ArchiveText()).arg(archive->templates().size()));
-  detect_->setEnabled(!runner_->busy() && capture_ != nullptr && archive != nullptr);
+  detect_->setEnabled(can_detect());
+  emit StateChanged();
 }
 
 }  // namespace layermod::ui

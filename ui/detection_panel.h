@@ -4,6 +4,7 @@
 #include <QWidget>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "ui/capture_source.h"
@@ -41,6 +42,11 @@ class DetectionPanel : public QWidget {
   bool Detect();
   // A BOP split folder (e.g. dropped on the window): the scene and frame in the form.
   void OpenBopFolder(const QString& split_dir);
+  // The frame after (`step` > 0) or before the one in the form, among the loaded BOP scene's
+  // frames; false at either end or without a BOP capture.
+  bool StepFrame(int step);
+  bool can_step_frames() const { return source_.is_bop() && !frame_ids_.empty(); }
+  bool can_detect() const;
   void SetOverlays(const OverlayToggles& toggles);
   OverlayToggles overlays() const;
 
@@ -53,14 +59,21 @@ class DetectionPanel : public QWidget {
   ImageView* image_view() const { return image_; }
   QTableWidget* table() const { return table_; }
   QCheckBox* overlay_toggle(int index) const { return toggles_[index]; }  // pipeline order
+  int frame_in_form() const;
 
  public slots:
   void OpenBopFrameDialog();
   void OpenCaptureFilesDialog();
+  // The BOP folder, scene and frame of the form (Enter in any of them, "Load frame").
+  void LoadFrameFromForm();
+  void NextFrame() { StepFrame(1); }
+  void PreviousFrame() { StepFrame(-1); }
 
  signals:
   void CaptureOpened();
   void DetectionFinished();
+  // Whether Detect and frame stepping are possible may have changed.
+  void StateChanged();
   void OpenArchiveRequested();
   // A detection row was double-clicked: show it in the 3D view.
   void DetectionActivated(int index);
@@ -69,12 +82,14 @@ class DetectionPanel : public QWidget {
   QWidget* BuildCaptureBox();
   QWidget* BuildDetectBox();
   QWidget* BuildOverlayBox();
+  QWidget* BuildControls();
   QWidget* BuildResultsArea();
   void RunWhenFree(std::function<bool()> start);
   void RunPending();
   bool StartLoad(const CaptureSource& source);
   bool StartDetect();
-  void ShowCapture(const CaptureSource& source, std::shared_ptr<const Capture> capture);
+  void ShowCapture(const CaptureSource& source, std::shared_ptr<const Capture> capture,
+                   std::vector<int> frame_ids);
   void ShowResult(std::shared_ptr<const Detector> detector,
                   std::shared_ptr<const DetectionResult> result);
   void OnArchiveChanged();
@@ -87,6 +102,9 @@ class DetectionPanel : public QWidget {
   JobRunner* runner_;
   std::vector<std::function<bool()>> pending_;
   CaptureSource source_;
+  std::vector<int> frame_ids_;  // of the loaded BOP scene
+  // The capture to load next; a newer request replaces it (fast frame stepping loads the last).
+  std::optional<CaptureSource> queued_capture_;
   std::shared_ptr<const Capture> capture_;
   // The detector is built once per template set; its archive copy outlives session changes.
   std::shared_ptr<const TemplateArchive> detector_archive_;

@@ -6,7 +6,7 @@
 namespace layermod::ui {
 
 ImageView::ImageView(QWidget* parent) : QWidget(parent) {
-  setMinimumSize(240, 180);
+  setMinimumSize(160, 120);
   setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 }
 

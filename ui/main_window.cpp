@@ -4,14 +4,21 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMenu>
+#include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
+#include <QResizeEvent>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTimer>
 
 #include "ui/detection_panel.h"
+#include "ui/dock_layout.h"
 #include "ui/job_runner.h"
 #include "ui/log_dock.h"
 #include "ui/model_panel.h"
@@ -24,12 +31,20 @@
 #include "ui/template_list_model.h"
 #include "ui/training_panel.h"
 #include "ui/views_panel.h"
+#include "ui/wheel_guard.h"
 #include "ui/window_menus.h"
+#include "util/log.h"
 
 // Q_INIT_RESOURCE must be used outside any namespace; the icons live in a static library.
 static void InitStudioResources() { Q_INIT_RESOURCE(icons); }
 
 namespace layermod::ui {
+namespace {
+
+constexpr QSize kPreferredSize(1600, 1000);
+constexpr int kStatusMs = 6000;
+
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
@@ -45,6 +60,7 @@ MainWindow::MainWindow(QWidget* parent)
       detection_panel_(new DetectionPanel(session_, runner_)),
       tabs_(new QTabWidget) {
   InitStudioResources();
+  WheelGuard::Install();
   setWindowTitle(tr("LayerMOD Studio"));
   setWindowIcon(QIcon(":/icons/layermod-studio.svg"));
   setAcceptDrops(true);
@@ -52,35 +68,37 @@ MainWindow::MainWindow(QWidget* parent)
   tabs_->addTab(scene_, tr("3D view"));
   tabs_->addTab(detection_panel_, tr("Detection preview"));
   setCentralWidget(tabs_);
-  QDockWidget* model_dock = AddDock(model_panel_, tr("Model"), "ModelDock", Qt::LeftDockWidgetArea);
-  AddDock(training_panel_, tr("Training"), "TrainingDock", Qt::LeftDockWidgetArea);
-  QDockWidget* views_dock =
-      AddDock(views_panel_, tr("Views"), "ViewsDock", Qt::RightDockWidgetArea);
-  QDockWidget* browser_dock =
-      AddDock(browser_, tr("Templates"), "TemplatesDock", Qt::BottomDockWidgetArea);
-  addDockWidget(Qt::BottomDockWidgetArea, log_dock_);
-  tabifyDockWidget(browser_dock, log_dock_);
-  browser_dock->raise();
+  BuildDocks();
   auto* recent_menu = new QMenu(tr("Recent &files"), this);
   files_ = new StudioFiles(this, session_, runner_, {model_panel_, views_panel_, training_panel_},
                            new RecentFiles(recent_menu, this));
-  BuildWindowMenus(this, files_, recent_menu, scene_, detection_panel_);
+  BuildWindowMenus(this, {files_, recent_menu, scene_, detection_panel_, training_panel_, runner_,
+                          session_, docks_, tabs_});
   Wire();
-  resize(1600, 1000);
+  const QRect available = screen()->availableGeometry();
+  resize(InitialSize(available));
+  move(available.topLeft());
   // The 3D view gets most of the window until the user arranges the docks (restored below).
-  resizeDocks({model_dock, views_dock}, {360, 400}, Qt::Horizontal);
-  resizeDocks({browser_dock}, {330}, Qt::Vertical);
+  docks_->Reset();
   QSettings settings;
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());
+  // A geometry saved on a larger screen must not push the status bar off this one.
+  if (width() > available.width() || height() > available.height()) {
+    resize(size().boundedTo(available.size()));
+    move(available.topLeft());
+  }
   views_panel_->RestoreSettings();
   statusBar()->showMessage(tr("Open a mesh (File ▸ Open mesh…, or drop it here) to start."));
 }
 
 MainWindow::~MainWindow() = default;
 
-QDockWidget* MainWindow::AddDock(QWidget* panel, const QString& title, const char* name,
-                                 Qt::DockWidgetArea area) {
+QSize MainWindow::InitialSize(const QRect& available) {
+  return kPreferredSize.boundedTo(available.size());
+}
+
+QDockWidget* MainWindow::MakeDock(QWidget* panel, const QString& title, const char* name) {
   auto* scroll = new QScrollArea;
   scroll->setWidget(panel);
   scroll->setWidgetResizable(true);
@@ -88,8 +106,19 @@ QDockWidget* MainWindow::AddDock(QWidget* panel, const QString& title, const cha
   auto* dock = new QDockWidget(title, this);
   dock->setObjectName(name);
   dock->setWidget(scroll);
-  addDockWidget(area, dock);
   return dock;
+}
+
+void MainWindow::BuildDocks() {
+  docks_ = new DockLayout(this);
+  // Side docks about half the window together; on 1280 px the central view keeps ~600 px.
+  docks_->Add(MakeDock(model_panel_, tr("Model"), "ModelDock"), Qt::LeftDockWidgetArea, 0.22, 360);
+  docks_->Add(MakeDock(training_panel_, tr("Training"), "TrainingDock"), Qt::LeftDockWidgetArea,
+              0.22, 360);
+  docks_->Add(MakeDock(views_panel_, tr("Views"), "ViewsDock"), Qt::RightDockWidgetArea, 0.29, 420);
+  QDockWidget* browser_dock = MakeDock(browser_, tr("Templates"), "TemplatesDock");
+  docks_->Add(browser_dock, Qt::BottomDockWidgetArea, 0.28, 330);
+  docks_->Tabify(browser_dock, log_dock_);
 }
 
 void MainWindow::Wire() {
@@ -118,11 +147,34 @@ void MainWindow::Wire() {
   connect(detection_panel_, &DetectionPanel::CaptureOpened, this,
           [this] { tabs_->setCurrentWidget(detection_panel_); });
   ShowJobFeedback(this, runner_);
+  WireTraining();
   connect(session_, &StudioSession::ArchiveChanged, this, [this] {
     scene_->ClearHighlight();
     scene_->ClearDetection();
     scene_->Render();
   });
+}
+
+void MainWindow::WireTraining() {
+  // The run trains what the form showed when it started; the form cannot change until it ends.
+  connect(training_panel_, &TrainingPanel::TrainingStarted, this, [this] {
+    views_panel_->SetLocked(true);
+    model_panel_->setEnabled(false);
+  });
+  for (auto ended : {&TrainingPanel::TrainingSucceeded, &TrainingPanel::TrainingStopped}) {
+    connect(training_panel_, ended, this, [this] {
+      views_panel_->SetLocked(false);
+      model_panel_->setEnabled(true);
+    });
+  }
+  connect(views_panel_, &ViewsPanel::PlanChanged, training_panel_, &TrainingPanel::RefreshState);
+  connect(training_panel_, &TrainingPanel::ArchiveExported, this,
+          [this](const QString& path, int templates) {
+            statusBar()->showMessage(tr("Exported %1 templates to %2")
+                                         .arg(QLocale().toString(templates))
+                                         .arg(QFileInfo(path).absoluteFilePath()),
+                                     kStatusMs);
+          });
 }
 
 void MainWindow::ShowSelectedCamera(int template_index) {
@@ -164,17 +216,54 @@ bool MainWindow::IsIdle() const {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (runner_->busy() || !ConfirmDiscardUnsaved(this, *session_)) {
-    if (runner_->busy())
-      statusBar()->showMessage(tr("Cancel the running job before quitting."), 5000);
+  if (!ConfirmCancelRunningJob() || !ConfirmDiscardUnsaved(this, *session_)) {
     event->ignore();
     return;
   }
+  SaveWindowSettings();
+  event->accept();
+}
+
+bool MainWindow::ConfirmCancelRunningJob() {
+  if (!runner_->busy()) return true;
+  const bool training = training_panel_->training();
+  bool cancel = BatchMode();
+  if (!cancel) {
+    QMessageBox box(QMessageBox::Question, tr("LayerMOD Studio"),
+                    training ? tr("Cancel training and quit?")
+                             : tr("Cancel “%1” and quit?").arg(runner_->job_name()),
+                    QMessageBox::Yes | QMessageBox::No, this);
+    box.setObjectName("quitWhileBusyDialog");
+    box.setInformativeText(training ? tr("The templates trained so far are discarded.")
+                                    : QString());
+    box.button(QMessageBox::Yes)
+        ->setText(training ? tr("Cancel training and quit") : tr("Cancel and quit"));
+    box.button(QMessageBox::No)->setText(tr("Keep running"));
+    box.setDefaultButton(QMessageBox::No);
+    cancel = box.exec() == QMessageBox::Yes;
+  }
+  if (!cancel) return false;
+  // The runner's destructor waits for the worker, which stops at its next cancellation check.
+  LogInfo((runner_->job_name() + tr(": cancelled to quit")).toStdString());
+  runner_->Cancel();
+  return true;
+}
+
+void MainWindow::SaveWindowSettings() {
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());
   views_panel_->SaveSettings();
-  event->accept();
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+  QMainWindow::resizeEvent(event);
+  const QSize old_size = event->oldSize();
+  if (old_size.isValid() &&
+      (event->size().width() > old_size.width() || event->size().height() > old_size.height())) {
+    // After the layout has taken the new size.
+    QTimer::singleShot(0, docks_, &DockLayout::RestoreCollapsed);
+  }
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

@@ -8,6 +8,7 @@ class QTabWidget;
 namespace layermod::ui {
 
 class DetectionPanel;
+class DockLayout;
 class JobRunner;
 class LogDock;
 class ModelPanel;
@@ -37,6 +38,9 @@ class MainWindow : public QMainWindow {
   QTabWidget* tabs() const { return tabs_; }
   LogDock* log_dock() const { return log_dock_; }
   StudioFiles* files() const { return files_; }
+  DockLayout* dock_layout() const { return docks_; }
+  // The first window's size: the preferred size, but never more than the screen offers.
+  static QSize InitialSize(const QRect& available);
 
   // Meshes and *.layermod archives, opened in order, and BOP split folders as detection
   // captures (command line, drops).
@@ -48,13 +52,18 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
  private:
-  QDockWidget* AddDock(QWidget* panel, const QString& title, const char* name,
-                       Qt::DockWidgetArea area);
+  QDockWidget* MakeDock(QWidget* panel, const QString& title, const char* name);
+  void BuildDocks();
   void Wire();
+  void WireTraining();
+  // True when no job runs, or the user agrees to cancel it (then it is cancelled).
+  bool ConfirmCancelRunningJob();
+  void SaveWindowSettings();
   void ShowSelectedCamera(int template_index);
 
   StudioSession* session_;
@@ -68,6 +77,7 @@ class MainWindow : public QMainWindow {
   DetectionPanel* detection_panel_;
   QTabWidget* tabs_;
   StudioFiles* files_ = nullptr;
+  DockLayout* docks_ = nullptr;
 };
 
 }  // namespace layermod::ui

@@ -9,6 +9,7 @@
 #include <QVBoxLayout>
 
 #include "ui/job_runner.h"
+#include "ui/studio_dialogs.h"
 #include "ui/studio_session.h"
 
 namespace layermod::ui {
@@ -106,6 +107,8 @@ bool ModelPanel::OpenMesh(const QString& path) {
 void ModelPanel::OnUnitsChanged() {
   const auto model = session_->model();
   if (model == nullptr || model->source_units == units()) return;
+  // Other units make another model: a set trained from this one no longer fits it.
+  if (!ConfirmDiscardUnsaved(this, *session_)) return SetUnits(model->source_units);
   if (!OpenMesh(QString::fromStdString(model->source.string()))) SetUnits(model->source_units);
 }
 

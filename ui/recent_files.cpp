@@ -10,11 +10,20 @@ namespace layermod::ui {
 namespace {
 
 constexpr char kSettingsKey[] = "recentFiles";
+constexpr int kMaxShownChars = 90;
+
+// The whole path, its middle elided when very long (the tooltip keeps all of it).
+QString ShownPath(const QString& path) {
+  if (path.size() <= kMaxShownChars) return path;
+  const int keep = (kMaxShownChars - 1) / 2;
+  return path.left(keep) + QStringLiteral("…") + path.right(keep);
+}
 
 }  // namespace
 
 RecentFiles::RecentFiles(QMenu* menu, QObject* parent)
     : QObject(parent), menu_(menu), files_(QSettings().value(kSettingsKey).toStringList()) {
+  menu_->setToolTipsVisible(true);
   Rebuild();
 }
 
@@ -31,8 +40,7 @@ void RecentFiles::Rebuild() {
   menu_->clear();
   for (int i = 0; i < files_.size(); ++i) {
     const QString path = files_[i];
-    QAction* action =
-        menu_->addAction(QStringLiteral("&%1  %2").arg(i + 1).arg(QFileInfo(path).fileName()));
+    QAction* action = menu_->addAction(QStringLiteral("&%1  %2").arg(i + 1).arg(ShownPath(path)));
     action->setToolTip(path);
     action->setStatusTip(path);
     connect(action, &QAction::triggered, this, [this, path] { emit OpenRequested(path); });

@@ -20,13 +20,16 @@
 #include <vtkSphereSource.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkVariant.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <utility>
 
 #include "geometry/pose.h"
+#include "pipeline/overlays.h"
 
 namespace layermod::ui {
 namespace {
@@ -64,17 +67,18 @@ vtkSmartPointer<vtkPolyData> CoveragePoints(const Sphere& sphere,
                                             const std::vector<double>& layer_depths_mm,
                                             const std::vector<ViewAngles>& directions) {
   auto points = vtkSmartPointer<vtkPoints>::New();
-  auto depths = vtkSmartPointer<vtkFloatArray>::New();
-  depths->SetName("layer_depth_mm");
+  auto layers = vtkSmartPointer<vtkFloatArray>::New();
+  layers->SetName("layer_index");
   auto aims = vtkSmartPointer<vtkDoubleArray>::New();
   aims->SetName("aim");
   aims->SetNumberOfComponents(3);
   const double nearest_mm = layer_depths_mm.front();
-  for (double depth_mm : layer_depths_mm) {
+  for (std::size_t layer = 0; layer < layer_depths_mm.size(); ++layer) {
     for (const ViewAngles& direction : directions) {
-      const Eigen::Vector3d at = GlyphPosition(sphere, direction, depth_mm, nearest_mm);
+      const Eigen::Vector3d at =
+          GlyphPosition(sphere, direction, layer_depths_mm[layer], nearest_mm);
       points->InsertNextPoint(at.data());
-      depths->InsertNextValue(static_cast<float>(depth_mm));
+      layers->InsertNextValue(static_cast<float>(layer));
       // Towards the centre; the length is the glyph size (scale by vector).
       const Eigen::Vector3d aim = (sphere.centre - at) * kGlyphFraction;
       aims->InsertNextTuple(aim.data());
@@ -82,7 +86,7 @@ vtkSmartPointer<vtkPolyData> CoveragePoints(const Sphere& sphere,
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
-  data->GetPointData()->SetScalars(depths);
+  data->GetPointData()->SetScalars(layers);
   data->GetPointData()->SetVectors(aims);
   return data;
 }
@@ -195,12 +199,18 @@ vtkSmartPointer<vtkActor> MakeCoverageActor(const Sphere& sphere,
   glyphs->OrientOn();
   glyphs->Update();
 
+  // One colour per layer, the same as the detection preview's layer legend and region overlay.
+  const int count = static_cast<int>(layer_depths_mm.size());
   auto lookup = vtkSmartPointer<vtkLookupTable>::New();
-  lookup->SetHueRange(0.62, 0.0);  // blue (near) to red (far)
-  const double far_mm = layer_depths_mm.back();
-  lookup->SetTableRange(layer_depths_mm.front(),
-                        far_mm > layer_depths_mm.front() ? far_mm : layer_depths_mm.front() + 1.0);
-  lookup->Build();
+  lookup->SetNumberOfTableValues(count);
+  lookup->SetTableRange(-0.5, count - 0.5);
+  for (int i = 0; i < count; ++i) {
+    const cv::Scalar bgr = LayerColor(i, count);
+    lookup->SetTableValue(i, bgr[2] / 255.0, bgr[1] / 255.0, bgr[0] / 255.0, 1.0);
+    char label[32];
+    std::snprintf(label, sizeof(label), "%.0f mm", layer_depths_mm[static_cast<std::size_t>(i)]);
+    lookup->SetAnnotation(vtkVariant(static_cast<double>(i)), label);
+  }
   auto actor = ActorFor(glyphs->GetOutput());
   auto* mapper = actor->GetMapper();
   mapper->SetLookupTable(lookup);
@@ -212,9 +222,12 @@ vtkSmartPointer<vtkActor> MakeCoverageActor(const Sphere& sphere,
 vtkSmartPointer<vtkScalarBarActor> MakeDepthScalarBar(vtkActor* coverage) {
   auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
   bar->SetLookupTable(coverage->GetMapper()->GetLookupTable());
-  bar->SetTitle("layer depth (mm)");
-  bar->SetNumberOfLabels(4);
-  bar->SetLabelFormat("%.0f");
+  // Discrete: one swatch per layer, labelled with its depth.
+  bar->SetTitle("layer depth");
+  bar->DrawTickLabelsOff();
+  bar->DrawAnnotationsOn();
+  bar->SetMaximumNumberOfColors(
+      static_cast<int>(coverage->GetMapper()->GetLookupTable()->GetNumberOfAvailableColors()));
   bar->SetMaximumWidthInPixels(90);
   bar->SetMaximumHeightInPixels(260);
   bar->SetPosition(0.88, 0.08);

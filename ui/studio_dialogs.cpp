@@ -5,6 +5,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <cstdio>
 
@@ -57,6 +58,22 @@ bool ConfirmDiscardUnsaved(QWidget* parent, const StudioSession& session) {
   box.setInformativeText(QObject::tr("Discard it?"));
   box.setDefaultButton(QMessageBox::Cancel);
   return box.exec() == QMessageBox::Discard;
+}
+
+bool ConfirmExportStale(QWidget* parent) {
+  if (batch_mode || qEnvironmentVariable(kDiscardWithoutAskingEnv) == QLatin1String("1")) {
+    return true;
+  }
+  QMessageBox box(QMessageBox::Warning, QObject::tr("LayerMOD Studio"),
+                  QObject::tr("The form has changed since this template set was made."),
+                  QMessageBox::Save | QMessageBox::Cancel, parent);
+  box.setObjectName("exportStaleDialog");
+  box.setInformativeText(
+      QObject::tr("Export writes the set as it was made, not the form's values. Train again to "
+                  "apply the form. Export anyway?"));
+  box.button(QMessageBox::Save)->setText(QObject::tr("Export as made"));
+  box.setDefaultButton(QMessageBox::Cancel);
+  return box.exec() == QMessageBox::Save;
 }
 
 QString AskOpenPath(QWidget* parent, const QString& kind, const QString& title,

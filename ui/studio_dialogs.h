@@ -24,6 +24,10 @@ inline constexpr char kDiscardWithoutAskingEnv[] = "LAYERMOD_STUDIO_DISCARD_WITH
 // True when there is no unexported trained set, or the user agrees to discard it.
 bool ConfirmDiscardUnsaved(QWidget* parent, const StudioSession& session);
 
+// The form has changed since the shown set was made: true when the user still wants to export
+// the set as it was made.
+bool ConfirmExportStale(QWidget* parent);
+
 // File dialogs that start in (and remember) the last directory used for `kind` ("mesh",
 // "archive", "profile", "camera"). Empty when cancelled.
 QString AskOpenPath(QWidget* parent, const QString& kind, const QString& title,

@@ -29,6 +29,7 @@ StudioFiles::StudioFiles(QWidget* window, StudioSession* session, JobRunner* run
     if (!busy) OpenNextQueued();
   });
   connect(panels_.model, &ModelPanel::MeshOpened, recent_, &RecentFiles::Add);
+  connect(panels_.model, &ModelPanel::MeshOpened, this, &StudioFiles::DropArchiveOfOtherMesh);
   connect(panels_.training, &TrainingPanel::ArchiveExported, recent_, &RecentFiles::Add);
   connect(recent_, &RecentFiles::OpenRequested, this,
           [this](const QString& path) { OpenFiles({path}); });
@@ -48,7 +49,18 @@ void StudioFiles::OpenNextQueued() {
 
 bool StudioFiles::OpenOne(const QString& path) {
   if (path.endsWith(QLatin1String(".layermod"), Qt::CaseInsensitive)) return OpenArchive(path);
+  // Another mesh ends the shown set unless it is that set's own mesh (DropArchiveOfOtherMesh).
+  if (!ConfirmDiscardUnsaved(window_, *session_)) return false;
   return panels_.model->OpenMesh(path);
+}
+
+void StudioFiles::DropArchiveOfOtherMesh() {
+  const auto archive = session_->archive();
+  const auto model = session_->model();
+  if (archive == nullptr || model == nullptr) return;
+  const auto& objects = archive->manifest().objects;
+  // A set trained from another mesh can be neither exported nor browsed as this mesh's set.
+  if (objects.empty() || !ModelMatchesObject(*model, objects.front())) session_->ClearArchive();
 }
 
 bool StudioFiles::OpenArchive(const QString& path) {
@@ -73,6 +85,10 @@ bool StudioFiles::OpenArchive(const QString& path) {
         panels_.views->SetCamera(archive->camera());
       }
       if (model != nullptr) session_->SetModel(model);
+      // After SetModel, which defaults the object from the mesh file name.
+      if (!objects.empty()) {
+        panels_.views->SetObject(objects[0].obj_id, QString::fromStdString(objects[0].name));
+      }
       session_->SetArchive(archive, path);
       recent_->Add(path);
     });
@@ -117,6 +133,7 @@ void StudioFiles::LoadProfileDialog() {
 
 void StudioFiles::ExportArchiveDialog() {
   if (session_->archive() == nullptr) return;
+  if (panels_.training->stale() && !ConfirmExportStale(window_)) return;
   const auto model = session_->model();
   const QString name =
       (model != nullptr ? QString::fromStdString(model->source.stem().string()) : "templates") +

@@ -45,6 +45,7 @@ class StudioFiles : public QObject {
 
  private:
   bool OpenOne(const QString& path);
+  void DropArchiveOfOtherMesh();
   void OpenNextQueued();
 
   QWidget* window_;

@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QListView>
 #include <QPixmap>
@@ -64,7 +65,12 @@ TemplateBrowser::TemplateBrowser(StudioSession* session, QWidget* parent)
   mesh_banner_text_->setWordWrap(true);
   banner_layout->addWidget(mesh_banner_text_, 1);
   banner_layout->addWidget(open_mesh);
-  mesh_banner_->setStyleSheet("background: #3a3f4b;");
+  // Light amber with dark text: readable under light and dark palettes alike.
+  mesh_banner_->setObjectName("meshBanner");
+  mesh_banner_->setAttribute(Qt::WA_StyledBackground);
+  mesh_banner_->setStyleSheet(
+      "#meshBanner { background: #fff3cd; border: 1px solid #d9b44a; } "
+      "#meshBanner QLabel { color: #3d3000; }");
 
   detail_image_->setObjectName("detailImage");
   detail_image_->setFixedSize(kDetailPx, kDetailPx);
@@ -87,8 +93,9 @@ TemplateBrowser::TemplateBrowser(StudioSession* session, QWidget* parent)
   layout->addLayout(list_and_detail, 1);
 
   connect(open_mesh, &QPushButton::clicked, this, &TemplateBrowser::OpenMeshRequested);
-  connect(list_, &QListView::clicked, this,
-          [this](const QModelIndex& index) { SelectRow(index.row()); });
+  // Clicks and arrow keys alike move the current template; the detail pane follows.
+  connect(list_->selectionModel(), &QItemSelectionModel::currentChanged, this,
+          [this](const QModelIndex& index) { ShowCurrent(index.row()); });
   connect(session_, &StudioSession::ArchiveChanged, this, &TemplateBrowser::Refresh);
   connect(session_, &StudioSession::ModelChanged, this, &TemplateBrowser::Refresh);
   Refresh();
@@ -177,11 +184,14 @@ void TemplateBrowser::ApplyFilter() {
 }
 
 void TemplateBrowser::SelectRow(int row) {
-  const TemplateRecord* record = model_->RecordAt(row);
-  if (record == nullptr) return;
-  list_->setCurrentIndex(model_->index(row));
+  if (model_->RecordAt(row) == nullptr) return;
+  if (list_->currentIndex().row() == row) return ShowCurrent(row);
+  list_->setCurrentIndex(model_->index(row));  // ShowCurrent through currentChanged
+}
+
+void TemplateBrowser::ShowCurrent(int row) {
   ShowDetail(row);
-  emit TemplateSelected(model_->TemplateIndexAt(row));
+  if (model_->RecordAt(row) != nullptr) emit TemplateSelected(model_->TemplateIndexAt(row));
 }
 
 void TemplateBrowser::ShowDetail(int row) {
@@ -190,9 +200,9 @@ void TemplateBrowser::ShowDetail(int row) {
     detail_image_->clear();
     detail_text_->setText(
         tr("Click a template to enlarge it and to see its camera in the 3D "
-           "view.<br><span style='color:#4cff4c'>●</span> colour-gradient "
-           "features &nbsp;<span style='color:#ff3b3b'>●</span> normal "
-           "features"));
+           "view.<br><span style='color:#4cff4c'>●</span> colour-gradient feature (green "
+           "tick: orientation)<br><span style='color:#ff3b3b'>●</span> normal feature (its "
+           "<span style='color:#0050ff'>blue</span> tick: direction)"));
     return;
   }
   cv::Mat image;
@@ -205,8 +215,8 @@ void TemplateBrowser::ShowDetail(int row) {
   const QString tooltip = model_->data(model_->index(row), Qt::ToolTipRole).toString();
   detail_text_->setText(tooltip.toHtmlEscaped().replace("\n", "<br>") +
                         tr("<br><br><span style='color:#4cff4c'>●</span> colour gradient "
-                           "(tick: orientation)<br><span style='color:#ff3b3b'>●</span> "
-                           "normal (blue tick: direction)"));
+                           "(green tick: orientation)<br><span style='color:#ff3b3b'>●</span> "
+                           "normal (<span style='color:#0050ff'>blue</span> tick: direction)"));
 }
 
 }  // namespace layermod::ui

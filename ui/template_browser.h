@@ -38,7 +38,8 @@ class TemplateBrowser : public QWidget {
   void ApplyFilter();
   void FillLayers();
   QWidget* BuildFilterRow();
-  void ShowDetail(int row);  // -1: none
+  void ShowDetail(int row);   // -1: none
+  void ShowCurrent(int row);  // detail and TemplateSelected
 
   StudioSession* session_;
   TemplateListModel* model_;

@@ -3,6 +3,7 @@
 
 #include <QWidget>
 #include <functional>
+#include <optional>
 
 #include "pipeline/training.h"
 
@@ -15,7 +16,9 @@ namespace layermod::ui {
 class JobRunner;
 class StudioSession;
 
-// Runs TrainTemplates on the worker thread (progress, ETA, cancel) and exports the result.
+// Runs TrainTemplates on the worker thread (progress, ETA, cancel) and exports the result. It
+// remembers the request the session's template set was made with, so it can say when the form no
+// longer describes that set (stale) and what Export would write.
 class TrainingPanel : public QWidget {
   Q_OBJECT
 
@@ -27,33 +30,45 @@ class TrainingPanel : public QWidget {
   // False when there is no model, another job runs, or the user keeps an unexported set.
   bool StartTraining();
   bool training() const { return training_; }
+  // A template set is shown but the form has changed since it was trained (or opened).
+  bool stale() const;
   // Writes the session's template set to `path` (atomically); an error box names the file.
   bool ExportArchive(const QString& path);
+  // "Export 9,576 templates (500–1500 mm)…", or a hint when there is nothing to export.
+  QString export_text() const;
 
  public slots:
   void CancelTraining();
+  // The form changed: re-check whether the shown set is stale.
+  void RefreshState();
 
  signals:
+  void TrainingStarted();
   void TrainingSucceeded();
   void TrainingStopped();  // failed or cancelled
-  void ArchiveExported(const QString& path);
+  void ArchiveExported(const QString& path, int templates);
   void ExportRequested();  // the panel's "Export archive…" button
 
  private:
   void OnProgress(qint64 done, qint64 total, const QString& stage, double elapsed_s);
   void OnJobEnded(bool succeeded);
+  void OnArchiveChanged();
+  void ResetProgress();
   void UpdateButtons();
 
   StudioSession* session_;
   JobRunner* runner_;
   RequestSource request_;
   bool training_ = false;
+  // What the session's template set was trained (or opened) with; empty without a set.
+  std::optional<TrainingRequest> basis_;
   QPushButton* train_;
   QPushButton* cancel_;
   QPushButton* export_;
   QProgressBar* progress_;
   QLabel* eta_;
   QLabel* summary_;
+  QLabel* stale_;
 };
 
 }  // namespace layermod::ui

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ui/camera_form.h"
+#include "ui/object_form.h"
 #include "ui/studio_dialogs.h"
 #include "ui/studio_session.h"
 
@@ -28,8 +29,12 @@ namespace {
 // Long enough to let someone type "1500" without four re-plans and glyph rebuilds.
 constexpr int kDebounceMs = 200;
 
+// Narrow enough for the three-column angle grid in a ~370 px dock.
+constexpr int kNumberBoxMinWidthPx = 64;
+
 QDoubleSpinBox* NumberBox(double min, double max, const QString& suffix, int decimals = 1) {
   auto* box = new QDoubleSpinBox;
+  box->setMinimumWidth(kNumberBoxMinWidthPx);
   box->setRange(min, max);
   box->setDecimals(decimals);
   box->setSuffix(suffix);
@@ -50,11 +55,23 @@ AngleRange* RangeOf(ViewSamplingOptions& views, int row) {
 }  // namespace
 
 ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
-    : QWidget(parent), session_(session), camera_(new CameraForm), debounce_(new QTimer(this)) {
+    : QWidget(parent),
+      session_(session),
+      camera_(new CameraForm),
+      object_(new ObjectForm),
+      debounce_(new QTimer(this)) {
   plan_label_ = new QLabel;
   plan_label_->setObjectName("planLabel");
   plan_label_->setWordWrap(true);
   plan_label_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* lock_note = new QLabel(tr("Training: the form is locked until the run ends."));
+  lock_note->setObjectName("formLockedNote");
+  lock_note->setWordWrap(true);
+  lock_note->setStyleSheet("QLabel { background: #fff3cd; color: #4a3b00; padding: 3px; }");
+  lock_note->hide();
+  lock_note_ = lock_note;
+  auto* object_box = new QGroupBox(tr("Object"));
+  (new QVBoxLayout(object_box))->addWidget(object_);
   auto* camera_box = new QGroupBox(tr("Camera (pinhole, as the sensor)"));
   (new QVBoxLayout(camera_box))->addWidget(camera_);
   auto* save = new QPushButton(tr("Save profile…"));
@@ -63,12 +80,15 @@ ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
   buttons->addWidget(load);
   buttons->addWidget(save);
 
+  // The count and any validation error first: they stay in sight on a short screen.
   auto* layout = new QVBoxLayout(this);
+  layout->addWidget(plan_label_);
+  layout->addWidget(lock_note_);
+  layout->addWidget(object_box);
   layout->addWidget(BuildDepthBox());
   layout->addWidget(BuildViewsBox());
   layout->addWidget(BuildFeaturesBox());
   layout->addWidget(camera_box);
-  layout->addWidget(plan_label_);
   layout->addLayout(buttons);
   layout->addStretch();
   SetProfile(TrainingProfile{});
@@ -77,7 +97,8 @@ ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
   debounce_->setInterval(kDebounceMs);
   connect(debounce_, &QTimer::timeout, this, &ViewsPanel::UpdatePlan);
   connect(camera_, &CameraForm::Changed, this, &ViewsPanel::ScheduleUpdate);
-  connect(session_, &StudioSession::ModelChanged, this, &ViewsPanel::UpdatePlan);
+  connect(object_, &ObjectForm::Changed, this, &ViewsPanel::ScheduleUpdate);
+  connect(session_, &StudioSession::ModelChanged, this, &ViewsPanel::OnModelChanged);
   connect(save, &QPushButton::clicked, this, [this] {
     const QString path =
         AskSavePath(this, "profile", tr("Save training profile"), JsonFileFilter(), "profile.json");
@@ -200,8 +221,30 @@ TrainingRequest ViewsPanel::request() const {
   TrainingRequest request;
   request.camera = camera();
   request.profile = profile();
-  if (const auto model = session_->model()) request.name = model->source.stem().string();
+  request.obj_id = object_->obj_id();
+  request.name = object_->name().toStdString();
+  const auto model = session_->model();
+  if (request.name.empty() && model != nullptr) request.name = model->source.stem().string();
   return request;
+}
+
+void ViewsPanel::SetObject(std::int32_t obj_id, const QString& name) {
+  object_->SetObject(obj_id, name);
+}
+
+void ViewsPanel::SetLocked(bool locked) {
+  locked_ = locked;
+  for (QWidget* child : findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+    if (child != plan_label_ && child != lock_note_) child->setEnabled(!locked);
+  }
+  lock_note_->setVisible(locked);
+}
+
+void ViewsPanel::OnModelChanged() {
+  if (const auto model = session_->model()) {
+    object_->DefaultFromMesh(QString::fromStdString(model->source.string()));
+  }
+  UpdatePlan();
 }
 
 void ViewsPanel::ScheduleUpdate() { debounce_->start(); }

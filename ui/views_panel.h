@@ -14,6 +14,7 @@ class QTimer;
 namespace layermod::ui {
 
 class CameraForm;
+class ObjectForm;
 class StudioSession;
 
 // The training profile form: depth range, view sampling, feature counts and camera, with a live
@@ -28,8 +29,12 @@ class ViewsPanel : public QWidget {
   void SetProfile(const TrainingProfile& profile);
   PinholeCamera camera() const;
   void SetCamera(const PinholeCamera& camera);
-  // Object name from the model's file name, obj_id 1.
+  // Object id and name from the form (defaulted from the mesh file name).
   TrainingRequest request() const;
+  void SetObject(std::int32_t obj_id, const QString& name);
+  // While a run trains, the form cannot change (the run uses the values it started with).
+  void SetLocked(bool locked);
+  bool locked() const { return locked_; }
 
   // The plan for the current model and form (nullopt without a model or with invalid values).
   const std::optional<TrainingPlan>& plan() const { return plan_; }
@@ -52,6 +57,7 @@ class ViewsPanel : public QWidget {
   QWidget* BuildDepthBox();
   QWidget* BuildViewsBox();
   QWidget* BuildFeaturesBox();
+  void OnModelChanged();
   void ScheduleUpdate();
 
   StudioSession* session_;
@@ -63,6 +69,9 @@ class ViewsPanel : public QWidget {
   QSpinBox* color_features_;
   QSpinBox* normal_features_;
   CameraForm* camera_;
+  ObjectForm* object_;
+  QWidget* lock_note_;
+  bool locked_ = false;
   QLabel* plan_label_;
   QTimer* debounce_;
   std::optional<TrainingPlan> plan_;

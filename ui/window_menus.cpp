@@ -7,13 +7,18 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QToolBar>
 
 #include "ui/detection_panel.h"
+#include "ui/dock_layout.h"
 #include "ui/job_runner.h"
 #include "ui/scene_view.h"
 #include "ui/studio_dialogs.h"
 #include "ui/studio_files.h"
+#include "ui/studio_session.h"
+#include "ui/training_panel.h"
+#include "util/log.h"
 #include "util/version.h"
 
 namespace layermod::ui {
@@ -44,7 +49,7 @@ void BuildFileMenu(QMainWindow* window, StudioFiles* files, QMenu* recent_menu,
   file->addSeparator();
   tools->addAction(file->addAction(QObject::tr("Open &BOP frame…"), detection,
                                    &DetectionPanel::OpenBopFrameDialog));
-  file->addAction(QObject::tr("Open &colour + depth capture…"), detection,
+  file->addAction(QObject::tr("Open &capture files (colour, depth, camera)…"), detection,
                   &DetectionPanel::OpenCaptureFilesDialog);
   file->addSeparator();
   add(QObject::tr("&Load training profile…"), QKeySequence(), &StudioFiles::LoadProfileDialog,
@@ -57,7 +62,47 @@ void BuildFileMenu(QMainWindow* window, StudioFiles* files, QMenu* recent_menu,
   file->addAction(QObject::tr("&Quit"), window, &QWidget::close, QKeySequence::Quit);
 }
 
-void BuildViewMenu(QMainWindow* window, SceneView* scene, QToolBar* tools) {
+// Train, Cancel and Detect as menu items with shortcuts, and frame stepping for the preview;
+// each is enabled only when it can run.
+void BuildRunMenu(QMainWindow* window, const WindowParts& parts, QToolBar* tools) {
+  QMenu* run = window->menuBar()->addMenu(QObject::tr("&Run"));
+  QAction* train =
+      run->addAction(QObject::tr("&Train templates"), parts.training, &TrainingPanel::StartTraining,
+                     QKeySequence(QObject::tr("Ctrl+T")));
+  QAction* cancel = run->addAction(QObject::tr("&Cancel running job"), parts.runner,
+                                   &JobRunner::Cancel, QKeySequence(Qt::Key_Escape));
+  run->addSeparator();
+  QAction* detect = run->addAction(QObject::tr("&Detect"), parts.detection, &DetectionPanel::Detect,
+                                   QKeySequence(QObject::tr("Ctrl+D")));
+  QAction* previous = run->addAction(QObject::tr("&Previous frame"), parts.detection,
+                                     &DetectionPanel::PreviousFrame, QKeySequence(Qt::Key_PageUp));
+  QAction* next = run->addAction(QObject::tr("&Next frame"), parts.detection,
+                                 &DetectionPanel::NextFrame, QKeySequence(Qt::Key_PageDown));
+  train->setObjectName("trainAction");
+  cancel->setObjectName("cancelAction");
+  detect->setObjectName("detectAction");
+  previous->setObjectName("previousFrameAction");
+  next->setObjectName("nextFrameAction");
+  tools->addAction(detect);
+  const WindowParts p = parts;
+  auto update = [p, train, cancel, detect, previous, next] {
+    train->setEnabled(!p.runner->busy() && p.session->model() != nullptr);
+    cancel->setEnabled(p.runner->busy());
+    detect->setEnabled(p.detection->can_detect());
+    // Only over the preview: elsewhere PgUp/PgDn keep paging lists.
+    const bool stepping = p.tabs->currentWidget() == p.detection && p.detection->can_step_frames();
+    previous->setEnabled(stepping);
+    next->setEnabled(stepping);
+  };
+  QObject::connect(p.runner, &JobRunner::BusyChanged, window, update);
+  QObject::connect(p.session, &StudioSession::ModelChanged, window, update);
+  QObject::connect(p.session, &StudioSession::ArchiveChanged, window, update);
+  QObject::connect(p.detection, &DetectionPanel::StateChanged, window, update);
+  QObject::connect(p.tabs, &QTabWidget::currentChanged, window, update);
+  update();
+}
+
+void BuildViewMenu(QMainWindow* window, SceneView* scene, DockLayout* docks, QToolBar* tools) {
   QMenu* view = window->menuBar()->addMenu(QObject::tr("&View"));
   tools->addAction(view->addAction(QObject::tr("&Reset camera"), scene, &SceneView::ResetCamera,
                                    QKeySequence(QObject::tr("Ctrl+R"))));
@@ -73,16 +118,20 @@ void BuildViewMenu(QMainWindow* window, SceneView* scene, QToolBar* tools) {
   for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
     view->addAction(dock->toggleViewAction());
   }
+  view->addSeparator();
+  QAction* reset = view->addAction(QObject::tr("Reset &layout"), docks, &DockLayout::Reset);
+  reset->setObjectName("resetLayoutAction");
+  reset->setToolTip(QObject::tr("Every panel back in its place and size"));
 }
 
 }  // namespace
 
-void BuildWindowMenus(QMainWindow* window, StudioFiles* files, QMenu* recent_menu, SceneView* scene,
-                      DetectionPanel* detection) {
+void BuildWindowMenus(QMainWindow* window, const WindowParts& parts) {
   QToolBar* tools = window->addToolBar(QObject::tr("Main"));
   tools->setObjectName("MainToolBar");
-  BuildFileMenu(window, files, recent_menu, detection, tools);
-  BuildViewMenu(window, scene, tools);
+  BuildFileMenu(window, parts.files, parts.recent_menu, parts.detection, tools);
+  BuildRunMenu(window, parts, tools);
+  BuildViewMenu(window, parts.scene, parts.docks, tools);
   QMenu* help = window->menuBar()->addMenu(QObject::tr("&Help"));
   help->addAction(QObject::tr("&About LayerMOD Studio"), window, [window] { ShowAbout(window); });
 }
@@ -96,6 +145,7 @@ void ShowJobFeedback(QMainWindow* window, JobRunner* runner) {
   });
   QObject::connect(runner, &JobRunner::Cancelled, status, [status](const QString& name) {
     status->showMessage(QObject::tr("%1: cancelled").arg(name), kStatusMs);
+    LogInfo(QObject::tr("%1: cancelled").arg(name).toStdString());
   });
   QObject::connect(runner, &JobRunner::Failed, window,
                    [window, status](const QString& name, const QString& message) {

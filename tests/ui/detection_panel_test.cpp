@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
+#include <QAction>
 #include <QCheckBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -11,6 +14,7 @@
 #include <QTableWidget>
 #include <QTest>
 
+#include "dataset/bop.h"
 #include "dataset/bop_writer.h"
 #include "ui/detection_options_form.h"
 #include "ui/detection_panel.h"
@@ -122,6 +126,64 @@ class DetectionPanelTest : public QObject {
     QVERIFY(window_->detection_panel()->table()->rowCount() >= 1);
   }
 
+  void PageKeysStepThroughTheScenesFrames() {
+    const QString split = ThreeFrameSplit();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy finished(panel, &DetectionPanel::DetectionFinished);
+    panel->OpenCapture({split, 1, 0, {}, {}, {}});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QCOMPARE(window_->tabs()->currentWidget(), panel);
+    QVERIFY(panel->can_step_frames());
+    // PgUp/PgDn are the Run menu's window shortcuts (Xvfb has no window manager to make the
+    // window active for a simulated key, so the actions are triggered as the shortcut would).
+    auto* next = window_->findChild<QAction*>("nextFrameAction");
+    auto* previous = window_->findChild<QAction*>("previousFrameAction");
+    QCOMPARE(next->shortcut(), QKeySequence(Qt::Key_PageDown));
+    QCOMPARE(previous->shortcut(), QKeySequence(Qt::Key_PageUp));
+    QVERIFY(next->isEnabled() && previous->isEnabled());
+    // The scene holds frames 0, 3 and 5: steps follow the scene's ids, not +1.
+    next->trigger();
+    QCOMPARE(panel->frame_in_form(), 3);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 60000);
+    QVERIFY(window_->findChild<QLabel*>("captureLabel")->text().contains("frame 3"));
+    next->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 60000);
+    QCOMPARE(panel->frame_in_form(), 5);
+    QVERIFY(!panel->StepFrame(1));  // the last frame
+    previous->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 4, 60000);
+    QCOMPARE(panel->frame_in_form(), 3);
+    // Over the 3D view the keys page lists again.
+    window_->tabs()->setCurrentWidget(window_->scene());
+    QVERIFY(!next->isEnabled());
+    QVERIFY(window_->findChild<QLabel*>("captureLabel")->text().contains("frame 3"));
+  }
+
+  void EnterInTheFrameBoxLoadsTheFrame() {
+    const QString split = ThreeFrameSplit();
+    DetectionPanel* panel = window_->detection_panel();
+    window_->findChild<QLineEdit*>("bopDir")->setText(split);
+    auto* frame = panel->findChild<QSpinBox*>("frameBox");
+    frame->setValue(5);
+    QSignalSpy opened(panel, &DetectionPanel::CaptureOpened);
+    QTest::keyClick(frame, Qt::Key_Return);
+    QTRY_COMPARE_WITH_TIMEOUT(opened.count(), 1, 60000);
+    QVERIFY(window_->findChild<QLabel*>("captureLabel")->text().contains("frame 5"));
+  }
+
+  void ColourDepthLoadClearsTheBopFolder() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy opened(panel, &DetectionPanel::CaptureOpened);
+    panel->OpenCapture({files.bop_dir, 1, 0, {}, {}, {}});
+    QTRY_COMPARE_WITH_TIMEOUT(opened.count(), 1, 60000);
+    QCOMPARE(window_->findChild<QLineEdit*>("bopDir")->text(), files.bop_dir);
+    panel->OpenCapture({{}, 0, 0, files.color, files.depth, files.camera});
+    QTRY_COMPARE_WITH_TIMEOUT(opened.count(), 2, 60000);
+    QVERIFY(window_->findChild<QLineEdit*>("bopDir")->text().isEmpty());
+    QVERIFY(!panel->can_step_frames());
+  }
+
   void MissingFrameShowsAnErrorNamingTheFolder() {
     const SyntheticCapture& files = SyntheticCaptureFiles();
     MessageBoxCloser closer(QMessageBox::Ok);
@@ -160,6 +222,21 @@ class DetectionPanelTest : public QObject {
   }
 
  private:
+  // A split whose scene 1 holds the synthetic frame three times, as images 0, 3 and 5.
+  static QString ThreeFrameSplit() {
+    const QString split = QDir(ScratchDir()).filePath("three_frames");
+    if (QFileInfo::exists(split)) return split;
+    const auto scenes = ListBopScenes(SyntheticCaptureFiles().bop_dir.toStdString());
+    BopFrame frame = LoadBopFrame(scenes.front(), 0);
+    BopSceneWriter writer(QDir(split).filePath("000001").toStdString());
+    for (int id : {0, 3, 5}) {
+      frame.image_id = id;
+      writer.AddFrame(frame);
+    }
+    writer.Finish();
+    return split;
+  }
+
   std::unique_ptr<MainWindow> window_;
 };
 

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QFile>
 #include <QMessageBox>
@@ -8,13 +12,16 @@
 #include <QSettings>
 #include <QTest>
 #include <QUrl>
+#include <QWheelEvent>
 #include <nlohmann/json.hpp>
 
+#include "ui/dock_layout.h"
 #include "ui/job_runner.h"
 #include "ui/log_dock.h"
 #include "ui/main_window.h"
 #include "ui/studio_dialogs.h"
 #include "ui/studio_session.h"
+#include "ui/training_panel.h"
 #include "ui/views_panel.h"
 #include "ui_test_support.h"
 #include "util/log.h"
@@ -109,6 +116,94 @@ class MainWindowTest : public QObject {
     qputenv(kDiscardWithoutAskingEnv, "1");
   }
 
+  void WheelChangesABoxOnlyWithFocus() {
+    auto* depth_min = window_->findChild<QDoubleSpinBox*>("depthMinBox");
+    auto* mode = window_->findChild<QComboBox*>("detectionMode");
+    QVERIFY(depth_min != nullptr && mode != nullptr);
+    QCOMPARE(depth_min->focusPolicy(), Qt::StrongFocus);
+    depth_min->clearFocus();
+    const double before = depth_min->value();
+    const int mode_before = mode->currentIndex();
+    SendWheel(depth_min, -120);
+    SendWheel(mode, -120);
+    QCOMPARE(depth_min->value(), before);
+    QCOMPARE(mode->currentIndex(), mode_before);
+    QVERIFY(!depth_min->hasFocus());
+    // With the focus the wheel edits, as it always did.
+    window_->activateWindow();
+    depth_min->setFocus();
+    QTRY_VERIFY(depth_min->hasFocus());
+    SendWheel(depth_min, 120);
+    QVERIFY(depth_min->value() > before);
+  }
+
+  void FirstWindowFitsALaptopScreen() {
+    const QSize size = MainWindow::InitialSize(QRect(0, 0, 1280, 800));
+    QVERIFY(size.width() <= 1280 && size.height() <= 800);
+    QCOMPARE(MainWindow::InitialSize(QRect(0, 0, 2560, 1440)), QSize(1600, 1000));
+    QVERIFY2(window_->minimumSizeHint().width() < 900,
+             qPrintable(QString::number(window_->minimumSizeHint().width())));
+  }
+
+  void ResetLayoutRestoresTheDocks() {
+    auto* views = window_->findChild<QDockWidget*>("ViewsDock");
+    auto* model = window_->findChild<QDockWidget*>("ModelDock");
+    auto* training = window_->findChild<QDockWidget*>("TrainingDock");
+    views->hide();
+    window_->addDockWidget(Qt::RightDockWidgetArea, model);
+    training->setFloating(true);
+    QVERIFY(!views->isVisible());
+    window_->findChild<QAction*>("resetLayoutAction")->trigger();
+    QVERIFY(views->isVisible());
+    QVERIFY(!training->isFloating());
+    QCOMPARE(window_->dockWidgetArea(model), Qt::LeftDockWidgetArea);
+    QCOMPARE(window_->dockWidgetArea(training), Qt::LeftDockWidgetArea);
+    QCOMPARE(window_->dockWidgetArea(views), Qt::RightDockWidgetArea);
+    QTRY_VERIFY(views->width() >= window_->dock_layout()->DefaultSize(views, window_->size()) - 20);
+  }
+
+  void DocksComeBackWhenTheWindowGrows() {
+    window_->resize(1280, 800);
+    QTRY_COMPARE(window_->width(), 1280);
+    window_->dock_layout()->Reset();
+    auto* views = window_->findChild<QDockWidget*>("ViewsDock");
+    const int wide = window_->dock_layout()->DefaultSize(views, window_->size());
+    QVERIFY(wide > 300);
+    QTRY_VERIFY2(views->width() >= wide - 20, qPrintable(QString::number(views->width())));
+    window_->resize(720, 560);
+    QTRY_VERIFY(window_->width() <= 760);
+    QTRY_VERIFY(views->width() < wide - 50);
+    window_->resize(1280, 800);
+    QTRY_COMPARE(window_->width(), 1280);
+    QTRY_VERIFY2(views->width() >= wide - 20, qPrintable(QString::number(views->width())));
+  }
+
+  void QuitWhileTrainingAsksToCancel() {
+    window_->OpenFiles({SampleMeshPath()});
+    QTRY_VERIFY_WITH_TIMEOUT(window_->session()->model() != nullptr, 20000);
+    QTRY_VERIFY(!window_->runner()->busy());
+    TrainingProfile large = TinyProfile();
+    large.depth_max_mm = 1500.0;
+    large.views = TrainingProfile::DefaultEnvelopeViews();
+    window_->views_panel()->SetProfile(large);
+    window_->views_panel()->UpdatePlan();
+    QVERIFY(window_->training_panel()->StartTraining());
+    {
+      MessageBoxCloser keep(QMessageBox::No);
+      QVERIFY(!window_->close());
+      QVERIFY(keep.seen());
+      QCOMPARE(keep.object_name(), QStringLiteral("quitWhileBusyDialog"));
+      QVERIFY2(keep.text().contains("Cancel training and quit?"), qPrintable(keep.text()));
+      QVERIFY(window_->runner()->busy());
+    }
+    {
+      MessageBoxCloser quit(QMessageBox::Yes);
+      QVERIFY(window_->close());
+      QVERIFY(quit.seen());
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->runner()->busy(), 60000);
+  }
+
   void ClosingSavesTheProfileForTheNextRun() {
     TrainingProfile profile = TinyProfile();
     profile.depth_max_mm = 1234.0;
@@ -119,6 +214,13 @@ class MainWindowTest : public QObject {
   }
 
  private:
+  static void SendWheel(QWidget* widget, int delta) {
+    const QPointF at(widget->width() / 2.0, widget->height() / 2.0);
+    QWheelEvent wheel(at, QPointF(widget->mapToGlobal(at.toPoint())), QPoint(), QPoint(0, delta),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(widget, &wheel);
+  }
+
   std::unique_ptr<MainWindow> window_;
 };
 

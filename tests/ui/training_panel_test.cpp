@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 
 #include "ui/job_runner.h"
 #include "ui/main_window.h"
+#include "ui/model_panel.h"
 #include "ui/studio_session.h"
 #include "ui/template_browser.h"
 #include "ui/template_list_model.h"
@@ -89,6 +94,80 @@ class TrainingPanelTest : public QObject {
     QVERIFY(!window_->runner()->busy());
   }
 
+  void FormIsLockedWhileTraining() {
+    TrainingProfile large = TinyProfile();
+    large.depth_max_mm = 1500.0;
+    large.views = TrainingProfile::DefaultEnvelopeViews();
+    window_->views_panel()->SetProfile(large);
+    window_->views_panel()->UpdatePlan();
+    auto* depth_max = window_->findChild<QDoubleSpinBox*>("depthMaxBox");
+    QVERIFY(depth_max->isEnabled());
+    QSignalSpy progress(window_->runner(), &JobRunner::Progress);
+    QVERIFY(window_->training_panel()->StartTraining());
+    QVERIFY(window_->views_panel()->locked());
+    QVERIFY(!depth_max->isEnabled());
+    QVERIFY(!window_->findChild<QSpinBox*>("objIdBox")->isEnabled());
+    QVERIFY(!window_->model_panel()->isEnabled());
+    // Typing into the locked box changes nothing.
+    QTest::keyClicks(depth_max, "9");
+    QCOMPARE(depth_max->value(), 1500.0);
+    QTRY_VERIFY_WITH_TIMEOUT(progress.count() > 0, 60000);
+    window_->training_panel()->CancelTraining();
+    QTRY_VERIFY_WITH_TIMEOUT(!window_->runner()->busy(), 60000);
+    QVERIFY(!window_->views_panel()->locked());
+    QVERIFY(depth_max->isEnabled());
+    QVERIFY(window_->model_panel()->isEnabled());
+  }
+
+  void ChangedFormMarksTheSetStale() {
+    TrainTiny();
+    TrainingPanel* panel = window_->training_panel();
+    auto* export_button = window_->findChild<QPushButton*>("exportButton");
+    QVERIFY(!panel->stale());
+    QVERIFY2(export_button->text().contains(QString::fromUtf8("24 templates (500–700 mm)")),
+             qPrintable(export_button->text()));
+    auto* depth_max = window_->findChild<QDoubleSpinBox*>("depthMaxBox");
+    depth_max->setValue(900.0);
+    window_->views_panel()->UpdatePlan();
+    QVERIFY(panel->stale());
+    QVERIFY(window_->findChild<QLabel*>("staleLabel")->isVisible());
+    // Export still names the set as trained, not the form.
+    QVERIFY(export_button->text().contains(QString::fromUtf8("(500–700 mm)")));
+    depth_max->setValue(700.0);
+    window_->views_panel()->UpdatePlan();
+    QVERIFY(!panel->stale());
+    QVERIFY(!window_->findChild<QLabel*>("staleLabel")->isVisible());
+    window_->findChild<QLineEdit*>("objNameEdit")->setText("renamed");
+    window_->views_panel()->UpdatePlan();
+    QVERIFY(panel->stale());
+  }
+
+  void AnotherMeshDropsTheSetAndItsFigures() {
+    TrainTiny();
+    QVERIFY(window_->findChild<QLabel*>("summaryLabel")->text().contains("24 templates"));
+    window_->OpenFiles({OffCentreMeshPath()});
+    QTRY_VERIFY_WITH_TIMEOUT(
+        window_->session()->model() != nullptr &&
+            window_->session()->model()->source.filename() == "bracket_off_centre.ply",
+        20000);
+    QVERIFY(window_->session()->archive() == nullptr);
+    QVERIFY(!window_->findChild<QPushButton*>("exportButton")->isEnabled());
+    QVERIFY(!window_->findChild<QLabel*>("summaryLabel")->text().contains("templates"));
+    QVERIFY(!window_->training_panel()->stale());
+  }
+
+  void ObjectIdAndNameReachTheArchive() {
+    window_->views_panel()->SetObject(8, "obj_000008");
+    TrainTiny();
+    const QString path = QDir(ScratchDir()).filePath("object_8.layermod");
+    QVERIFY(window_->training_panel()->ExportArchive(path));
+    const TemplateArchive archive = ReadArchive(path.toStdString());
+    QCOMPARE(archive.manifest().objects.size(), std::size_t{1});
+    QCOMPARE(archive.manifest().objects.front().obj_id, 8);
+    QCOMPARE(archive.manifest().objects.front().name, std::string("obj_000008"));
+    QCOMPARE(archive.templates().front().obj_id, 8);
+  }
+
   void TrainingWithoutModelIsRefused() {
     window_->session()->SetModel(nullptr);
     QVERIFY(!window_->training_panel()->StartTraining());
@@ -104,6 +183,14 @@ class TrainingPanelTest : public QObject {
       }
     }
     return false;
+  }
+
+  void TrainTiny() {
+    window_->views_panel()->SetProfile(TinyProfile());
+    window_->views_panel()->UpdatePlan();
+    QSignalSpy succeeded(window_->training_panel(), &TrainingPanel::TrainingSucceeded);
+    QVERIFY(window_->training_panel()->StartTraining());
+    QTRY_COMPARE_WITH_TIMEOUT(succeeded.count(), 1, 60000);
   }
 
   std::unique_ptr<MainWindow> window_;

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileInfo>
 #include <QLocale>
 #include <QSpinBox>
 #include <QTest>
 #include <nlohmann/json.hpp>
 
+#include "ui/object_form.h"
 #include "ui/studio_session.h"
 #include "ui/views_panel.h"
 #include "ui_test_support.h"
@@ -91,6 +94,30 @@ class ViewsPanelTest : public QObject {
     QVERIFY(panel_->plan_text().contains("Invalid"));
     QVERIFY2(panel_->plan_text().contains("depth_min_mm must be below depth_max_mm"),
              qPrintable(panel_->plan_text()));
+  }
+
+  void ObjectIdComesFromTheFileName() {
+    QCOMPARE(ObjectIdFromFileName("/data/lmo/models/obj_000008.ply"), 8);
+    QCOMPARE(ObjectIdFromFileName("obj_000012.stl"), 12);
+    QCOMPARE(ObjectIdFromFileName("part12.obj"), 12);
+    QCOMPARE(ObjectIdFromFileName("bracket.ply"), 1);
+    QCOMPARE(ObjectIdFromFileName("99999999999999.ply"), 1);  // beyond int32: the default
+  }
+
+  void ModelDefaultsTheObjectFields() {
+    const QString path = QDir(ScratchDir()).filePath("obj_000008.ply");
+    if (!QFileInfo::exists(path)) QVERIFY(QFile::copy(SampleMeshPath(), path));
+    session_->SetModel(std::make_shared<const Model>(LoadModel(path.toStdString())));
+    QCOMPARE(panel_->request().obj_id, 8);
+    QCOMPARE(panel_->request().name, std::string("obj_000008"));
+    // Edits survive a reload of the same file.
+    panel_->SetObject(3, "gear");
+    session_->SetModel(std::make_shared<const Model>(LoadModel(path.toStdString())));
+    QCOMPARE(panel_->request().obj_id, 3);
+    QCOMPARE(panel_->request().name, std::string("gear"));
+    session_->SetModel(model_);  // another file: its defaults
+    QCOMPARE(panel_->request().obj_id, 1);
+    QCOMPARE(panel_->request().name, std::string("bracket"));
   }
 
   void ProfileFileRoundTrip() {

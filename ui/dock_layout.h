@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <QObject>
+#include <QSize>
+#include <vector>
+
+class QDockWidget;
+class QMainWindow;
+
+namespace layermod::ui {
+
+// The studio's default dock arrangement, sized for the window: the side docks run the full
+// height (the bottom dock sits under the central view only), so a 1280×800 screen shows every
+// panel's main controls. Reset() puts every dock back; RestoreCollapsed() gives docks that a
+// small window squeezed their size back once the window grows again.
+class DockLayout : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit DockLayout(QMainWindow* window);
+
+  // `fraction` of the window's width (side areas) or height (bottom), at most `max_px`.
+  void Add(QDockWidget* dock, Qt::DockWidgetArea area, double fraction, int max_px);
+  // `dock` shares `with`'s place as a tab (added after `with`).
+  void Tabify(QDockWidget* with, QDockWidget* dock);
+
+  // The size a dock of this layout gets in a window of `window_size`.
+  int DefaultSize(const QDockWidget* dock, QSize window_size) const;
+
+ public slots:
+  void Reset();
+  void RestoreCollapsed();
+
+ private:
+  struct Entry {
+    QDockWidget* dock;
+    Qt::DockWidgetArea area;
+    double fraction;
+    int max_px;
+    QDockWidget* tab_of = nullptr;
+  };
+  const Entry* Find(const QDockWidget* dock) const;
+  void ResizeAll(bool only_collapsed);
+
+  QMainWindow* window_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace layermod::ui
