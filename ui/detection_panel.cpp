@@ -18,6 +18,7 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "pipeline/overlays.h"
 #include "ui/capture_dialog.h"
@@ -122,7 +123,9 @@ QWidget* DetectionPanel::BuildControls() {
   scroll->setWidgetResizable(true);
   scroll->setFrameShape(QFrame::NoFrame);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(kControlsMinWidthPx);
+  // Never narrower than the controls: a clipped Detect button is worse than a smaller image.
+  scroll->setMinimumWidth(std::max(kControlsMinWidthPx, controls->minimumSizeHint().width()) +
+                          scroll->verticalScrollBar()->sizeHint().width());
   return scroll;
 }
 
@@ -137,7 +140,7 @@ QWidget* DetectionPanel::BuildCaptureBox() {
   auto* browse = new QPushButton(tr("Browse…"));
   auto* load = new QPushButton(tr("Load frame"));
   load->setObjectName("loadFrameButton");
-  auto* files = new QPushButton(tr("Open capture files…"));
+  auto* files = new QPushButton(tr("Capture files…"));
   files->setToolTip(tr("Colour image, depth PNG and camera.json in one dialog"));
   load->setToolTip(tr("Enter in the folder, scene or frame box loads too; PgUp/PgDn step frames"));
   capture_label_->setObjectName("captureLabel");
@@ -150,11 +153,13 @@ QWidget* DetectionPanel::BuildCaptureBox() {
   frame_row->addWidget(scene_);
   frame_row->addWidget(new QLabel(tr("Frame")));
   frame_row->addWidget(frame_);
-  frame_row->addWidget(load);
+  auto* load_row = new QHBoxLayout;
+  load_row->addWidget(load);
+  load_row->addWidget(files);
   auto* layout = new QVBoxLayout(box);
   layout->addLayout(dir_row);
   layout->addLayout(frame_row);
-  layout->addWidget(files);
+  layout->addLayout(load_row);
   layout->addWidget(capture_label_);
   connect(browse, &QPushButton::clicked, this, &DetectionPanel::OpenBopFrameDialog);
   connect(load, &QPushButton::clicked, this, &DetectionPanel::LoadFrameFromForm);

@@ -50,7 +50,25 @@ int DockLayout::DefaultSize(const QDockWidget* dock, QSize window_size) const {
   return std::min(entry->max_px, static_cast<int>(entry->fraction * extent));
 }
 
+void DockLayout::SetPreviewShown(bool shown) {
+  if (shown) {
+    if (!hidden_for_preview_.isEmpty()) return;
+    for (const Entry& entry : entries_) {
+      if (entry.dock->isVisible() && !entry.dock->isFloating()) {
+        hidden_for_preview_ << entry.dock;
+        entry.dock->hide();
+      }
+    }
+    return;
+  }
+  for (const QPointer<QDockWidget>& dock : hidden_for_preview_) {
+    if (dock != nullptr) dock->show();
+  }
+  hidden_for_preview_.clear();
+}
+
 void DockLayout::Reset() {
+  hidden_for_preview_.clear();
   for (const Entry& entry : entries_) {
     entry.dock->setFloating(false);
     if (entry.tab_of == nullptr) window_->addDockWidget(entry.area, entry.dock);

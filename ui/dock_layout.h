@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <QList>
 #include <QObject>
+#include <QPointer>
 #include <QSize>
 #include <vector>
 
@@ -13,7 +15,9 @@ namespace layermod::ui {
 // The studio's default dock arrangement, sized for the window: the side docks run the full
 // height (the bottom dock sits under the central view only), so a 1280×800 screen shows every
 // panel's main controls. Reset() puts every dock back; RestoreCollapsed() gives docks that a
-// small window squeezed their size back once the window grows again.
+// small window squeezed their size back once the window grows again. While the detection
+// preview is shown, the authoring docks step aside (SetPreviewShown) so that the preview gets
+// the whole window; they come back with the 3D view.
 class DockLayout : public QObject {
   Q_OBJECT
 
@@ -31,6 +35,8 @@ class DockLayout : public QObject {
  public slots:
   void Reset();
   void RestoreCollapsed();
+  // True: hide the visible docks (remembered); false: show those again.
+  void SetPreviewShown(bool shown);
 
  private:
   struct Entry {
@@ -45,6 +51,7 @@ class DockLayout : public QObject {
 
   QMainWindow* window_;
   std::vector<Entry> entries_;
+  QList<QPointer<QDockWidget>> hidden_for_preview_;
 };
 
 }  // namespace layermod::ui

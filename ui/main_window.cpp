@@ -146,6 +146,9 @@ void MainWindow::Wire() {
           &MainWindow::ShowDetectionInScene);
   connect(detection_panel_, &DetectionPanel::CaptureOpened, this,
           [this] { tabs_->setCurrentWidget(detection_panel_); });
+  // The preview gets the whole window; the authoring docks return with the 3D view.
+  connect(tabs_, &QTabWidget::currentChanged, docks_,
+          [this] { docks_->SetPreviewShown(tabs_->currentWidget() == detection_panel_); });
   ShowJobFeedback(this, runner_);
   WireTraining();
   connect(session_, &StudioSession::ArchiveChanged, this, [this] {
@@ -250,6 +253,7 @@ bool MainWindow::ConfirmCancelRunningJob() {
 }
 
 void MainWindow::SaveWindowSettings() {
+  docks_->SetPreviewShown(false);  // the arrangement of the authoring docks is what is kept
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());

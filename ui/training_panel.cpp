@@ -229,7 +229,7 @@ QString TrainingPanel::export_text() const {
   const auto& objects = archive->manifest().objects;
   if (objects.empty()) return tr("Export %1 templates…").arg(Count(archive->templates().size()));
   const TrainingProfile& profile = objects.front().profile;
-  return tr("Export %1 templates (%2–%3 mm)…")
+  return tr("Export %1 templates…\n(%2–%3 mm)")
       .arg(Count(archive->templates().size()))
       .arg(profile.depth_min_mm, 0, 'f', 0)
       .arg(profile.depth_max_mm, 0, 'f', 0);
