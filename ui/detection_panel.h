@@ -57,6 +57,7 @@ class DetectionPanel : public QWidget {
   const Detector* result_detector() const { return result_detector_.get(); }
   bool has_pending_work() const { return !pending_.empty(); }
   ImageView* image_view() const { return image_; }
+  DetectionOptionsForm* options_form() const { return options_; }
   QTableWidget* table() const { return table_; }
   QCheckBox* overlay_toggle(int index) const { return toggles_[index]; }  // pipeline order
   int frame_in_form() const;

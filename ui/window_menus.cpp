@@ -10,6 +10,7 @@
 #include <QTabWidget>
 #include <QToolBar>
 
+#include "ui/detection_options_form.h"
 #include "ui/detection_panel.h"
 #include "ui/dock_layout.h"
 #include "ui/job_runner.h"
@@ -51,6 +52,10 @@ void BuildFileMenu(QMainWindow* window, StudioFiles* files, QMenu* recent_menu,
                                    &DetectionPanel::OpenBopFrameDialog));
   file->addAction(QObject::tr("Open &capture files (colour, depth, camera)…"), detection,
                   &DetectionPanel::OpenCaptureFilesDialog);
+  file->addAction(QObject::tr("Load &detection settings…"), detection->options_form(),
+                  &DetectionOptionsForm::LoadProfileDialog);
+  file->addAction(QObject::tr("Sa&ve detection settings…"), detection->options_form(),
+                  &DetectionOptionsForm::SaveProfileDialog);
   file->addSeparator();
   add(QObject::tr("&Load training profile…"), QKeySequence(), &StudioFiles::LoadProfileDialog,
       false);

@@ -8,14 +8,17 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
+#include <nlohmann/json.hpp>
 
 #include "dataset/bop.h"
 #include "dataset/bop_writer.h"
+#include "pipeline/detector_options.h"
 #include "ui/detection_options_form.h"
 #include "ui/detection_panel.h"
 #include "ui/image_view.h"
@@ -69,6 +72,41 @@ class DetectionPanelTest : public QObject {
     restored.RestoreSettings();
     QCOMPARE(restored.options().coarse.upper_factor, 1.5f);
     QCOMPARE(restored.options().match.max_refinements, 500);
+    restored.SetOptions(DetectorOptions{});
+    restored.SaveSettings();  // leave the defaults for the other tests
+  }
+
+  void SettingsFormIsTheFieldTable() {
+    DetectionOptionsForm form;
+    for (const DetectorOptionField& field : DetectorOptionFields()) {
+      QVERIFY2(form.field_widget(std::string(field.key)) != nullptr, field.key.data());
+    }
+    // The boxes show every default exactly (no rounding to the boxes' decimals).
+    QVERIFY2(SameOptions(form.options(), DetectorOptions{}), qPrintable(differences_));
+    DetectorOptions options;
+    options.mode = DetectionMode::kExhaustive;
+    options.icp.huber_mm = 7.5;
+    options.verification.min_depth_inlier_ratio = 0.4;
+    options.regions.cell_size_px = 12;
+    form.SetOptions(options);
+    QVERIFY2(SameOptions(form.options(), options), qPrintable(differences_));
+    const QString path = QDir(ScratchDir()).filePath("detector_profile.json");
+    QVERIFY(form.SaveProfile(path));
+    DetectionOptionsForm loaded;
+    QVERIFY(loaded.LoadProfile(path));
+    QVERIFY2(SameOptions(loaded.options(), options), qPrintable(differences_));
+    // Settings are keyed by the table's keys.
+    form.SaveSettings();
+    QCOMPARE(QSettings().value("detection/icp_huber").toString(), QStringLiteral("7.5"));
+    QCOMPARE(QSettings().value("detection/mode").toString(), QStringLiteral("\"exhaustive\""));
+    DetectionOptionsForm restored;
+    restored.RestoreSettings();
+    QVERIFY2(SameOptions(restored.options(), options), qPrintable(differences_));
+    // A value an older studio saved in another form keeps its default, not the others'.
+    QSettings().setValue("detection/mode", 2);
+    restored.RestoreSettings();
+    QCOMPARE(restored.options().mode, DetectorOptions{}.mode);
+    QCOMPARE(restored.options().icp.huber_mm, 7.5);
     restored.SetOptions(DetectorOptions{});
     restored.SaveSettings();  // leave the defaults for the other tests
   }
@@ -222,6 +260,21 @@ class DetectionPanelTest : public QObject {
   }
 
  private:
+  // Whether `a` and `b` have the same fields; the differing fields in differences_.
+  bool SameOptions(const DetectorOptions& a, const DetectorOptions& b) {
+    const nlohmann::json ja = DetectorOptionsToJson(a);
+    const nlohmann::json jb = DetectorOptionsToJson(b);
+    differences_.clear();
+    for (const auto& [key, value] : ja.items()) {
+      if (jb.at(key) != value) {
+        differences_ +=
+            QString::fromStdString(key + ": " + value.dump() + " vs " + jb.at(key).dump() + "; ");
+      }
+    }
+    return differences_.isEmpty();
+  }
+
+  QString differences_;
   // A split whose scene 1 holds the synthetic frame three times, as images 0, 3 and 5.
   static QString ThreeFrameSplit() {
     const QString split = QDir(ScratchDir()).filePath("three_frames");
