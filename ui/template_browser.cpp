@@ -21,7 +21,7 @@
 namespace layermod::ui {
 namespace {
 
-constexpr int kDetailPx = 240;
+constexpr int kDetailPx = 180;  // the Templates dock is ~200 px tall on a 1280x800 screen
 constexpr int kDetailTextWidthPx = 220;
 
 QDoubleSpinBox* AngleBox(double min_deg, double max_deg, double value_deg, const char* name) {

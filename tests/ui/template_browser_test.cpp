@@ -4,6 +4,8 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QListView>
+#include <QSignalSpy>
 #include <QTest>
 #include <nlohmann/json.hpp>
 
@@ -116,6 +118,26 @@ class TemplateBrowserTest : public QObject {
     QVERIFY(!image->pixmap(Qt::ReturnByValue).isNull());
     const QString text = window_->browser()->findChild<QLabel*>("detailText")->text();
     QVERIFY(text.contains(QStringLiteral("Template #%1").arg(trained_.templates()[5].id)));
+  }
+
+  void ArrowKeysMoveTheDetailAndTheCamera() {
+    window_->OpenFiles({with_mesh_});
+    QTRY_VERIFY_WITH_TIMEOUT(window_->session()->archive() != nullptr, 20000);
+    TemplateBrowser* browser = window_->browser();
+    QSignalSpy selected(browser, &TemplateBrowser::TemplateSelected);
+    browser->SelectRow(5);
+    QCOMPARE(selected.count(), 1);
+    browser->list_view()->setFocus();
+    QTest::keyClick(browser->list_view(), Qt::Key_Right);
+    QCOMPARE(browser->list_view()->currentIndex().row(), 6);
+    QCOMPARE(selected.count(), 2);
+    const int template_index = browser->list_model()->TemplateIndexAt(6);
+    QCOMPARE(selected.last().at(0).toInt(), template_index);
+    const QString text = browser->findChild<QLabel*>("detailText")->text();
+    QVERIFY2(
+        text.contains(QStringLiteral("Template #%1")
+                          .arg(trained_.templates()[static_cast<std::size_t>(template_index)].id)),
+        qPrintable(text));
   }
 
   void CoverageGlyphsFollowThePlan() {
