@@ -33,7 +33,7 @@ cp resources/sample/bracket.ply "$work/set/"
 shoot() {  # shoot NAME ARGS...
   local name=$1
   shift
-  xvfb-run -a -s "-screen 0 1920x1200x24" "$studio" --screenshot "$out/$name.png" "$@"
+  xvfb-run -a -s "-screen 0 1280x800x24" "$studio" --screenshot "$out/$name.png" "$@"
   echo "wrote $out/$name.png"
 }
 capture=(--bop "$work/synth/test" --scene 1 --frame 0)
