@@ -19,7 +19,6 @@ namespace layermod::cli {
 namespace {
 
 struct BenchArgs : EvaluationArgs {
-  float threshold = MatchOptions{}.threshold_percent;
   bool color_only = false;
   std::string out;
 };
@@ -33,10 +32,7 @@ void RequireReleaseBuild() {
 
 void RunBenchCommand(const BenchArgs& args) {
   RequireReleaseBuild();
-  DetectorOptions options;
-  options.match.threshold_percent = args.threshold;
-  args.tuning.ApplyTo(options);
-  options.Validate();
+  const DetectorOptions options = args.detector.Resolve();
   const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);
   CheckWritableTarget(args.out);
@@ -61,9 +57,6 @@ void AddBenchCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "bench", "Time Scene-Patch, exhaustive matching and cv::linemod on the same frames");
   AddEvaluationOptions(command, *args);
-  command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
-      ->check(CLI::Range(1.0f, 100.0f))
-      ->capture_default_str();
   command->add_flag("--color-only", args->color_only,
                     "RGB datasets: LINE-2D (color-only mode) vs cv::linemod LINE-2D");
   command->add_option("--out", args->out, "bench.json to write")->required();

@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "cli/detector_tuning.h"
+#include "cli/detector_flags.h"
 #include "cli/image_output.h"
 #include "dataset/bop.h"
 #include "pipeline/capture_io.h"
+#include "pipeline/detection_json.h"
 #include "pipeline/detector.h"
 #include "pipeline/overlays.h"
 #include "util/atomic_file.h"
@@ -31,11 +32,7 @@ struct DetectArgs {
   std::string camera;
   double depth_scale = 1.0;
   std::string float_depth_unit = "mm";
-  std::string mode = "scene-patch";
-  int max_instances = 1;
-  int blocks = CoarsePositioningOptions{}.max_blocks;
-  DetectorTuning tuning;
-  float threshold = MatchOptions{}.threshold_percent;
+  DetectorFlags detector;
   std::string json_out;
   std::string overlay_out;
   std::string stages_dir;
@@ -72,43 +69,6 @@ Capture LoadRequestedCapture(const DetectArgs& args) {
   return LoadCapture(files);
 }
 
-nlohmann::json DetectionJson(const Detection& detection) {
-  std::vector<double> rotation;
-  for (int row = 0; row < 3; ++row) {
-    for (int col = 0; col < 3; ++col) rotation.push_back(detection.cam_from_model.R(row, col));
-  }
-  const Eigen::Vector3d& t = detection.cam_from_model.t;
-  return {{"obj_id", detection.obj_id},
-          {"name", detection.name},
-          {"score", detection.score},
-          {"cam_R_m2c", rotation},
-          {"cam_t_m2c", {t.x(), t.y(), t.z()}},
-          {"template_id", detection.template_id},
-          {"layer_mm", detection.layer_depth_mm},
-          {"icp",
-           {{"rmse_mm", detection.icp.rmse_mm},
-            {"inlier_ratio", detection.icp.inlier_ratio},
-            {"iterations", detection.icp.iterations}}},
-          {"verification",
-           {{"depth_inlier_ratio", detection.verification.depth_inlier_ratio},
-            {"depth_fit", detection.verification.depth_fit},
-            {"visible_ratio", detection.verification.visible_ratio},
-            {"color_agreement", detection.verification.color_agreement}}}};
-}
-
-nlohmann::json ResultJson(const DetectionResult& result, DetectionMode mode) {
-  nlohmann::json json;
-  json["mode"] = std::string(ModeName(mode));
-  json["detections"] = nlohmann::json::array();
-  for (const Detection& detection : result.detections)
-    json["detections"].push_back(DetectionJson(detection));
-  const StageTimings& t = result.timings;
-  json["timings_ms"] = {{"prepare", t.prepare_ms}, {"regions", t.regions_ms},
-                        {"coarse", t.coarse_ms},   {"match", t.match_ms},
-                        {"pose", t.pose_ms},       {"total", t.total_ms}};
-  return json;
-}
-
 void WriteStageImages(const fs::path& dir, const Capture& capture, const DetectionResult& result,
                       const Detector& detector) {
   std::error_code ec;
@@ -143,13 +103,7 @@ void PrintDetections(const DetectionResult& result) {
 }
 
 void RunDetect(const DetectArgs& args) {
-  DetectorOptions options;
-  options.mode = ParseDetectionMode(args.mode);
-  options.max_instances = args.max_instances;
-  options.coarse.max_blocks = args.blocks;
-  args.tuning.ApplyTo(options);
-  options.match.threshold_percent = args.threshold;
-  options.Validate();
+  const DetectorOptions options = args.detector.Resolve();
   for (const std::string& path : {args.json_out, args.overlay_out}) {
     if (!path.empty()) CheckWritableTarget(path);
   }
@@ -160,7 +114,7 @@ void RunDetect(const DetectArgs& args) {
   const DetectionResult result = detector.Detect(capture, options);
   PrintDetections(result);
   if (!args.json_out.empty()) {
-    WriteFileAtomically(args.json_out, ResultJson(result, options.mode).dump(2) + "\n");
+    WriteFileAtomically(args.json_out, DetectionResultToJson(result, options.mode).dump(2) + "\n");
   }
   if (!args.overlay_out.empty()) {
     WritePng(args.overlay_out,
@@ -188,19 +142,7 @@ void AddDetectCommand(CLI::App& app) {
       ->add_option("--float-depth-unit", args->float_depth_unit,
                    "Unit of a 32-bit float depth image: mm or m")
       ->check(CLI::IsMember({"mm", "m"}));
-  command->add_option("--mode", args->mode, "scene-patch, exhaustive or color-only")
-      ->check(CLI::IsMember({"scene-patch", "exhaustive", "color-only"}))
-      ->capture_default_str();
-  command->add_option("--instances", args->max_instances, "Detections kept per object")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  command->add_option("--blocks", args->blocks, "Scene blocks kept by coarse positioning (0 = all)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  AddDetectorTuningOptions(command, args->tuning);
-  command->add_option("--threshold", args->threshold, "Match similarity threshold (percent)")
-      ->check(CLI::Range(1.0f, 100.0f))
-      ->capture_default_str();
+  args->detector.AddTo(command);
   command->add_option("--json", args->json_out, "Write detections as JSON");
   command->add_option("--overlay", args->overlay_out, "Write the final poses drawn on the image");
   command->add_option("--overlay-stages", args->stages_dir,

@@ -20,15 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 
 struct EvalArgs : EvaluationArgs {
-  std::string mode = "scene-patch";
   std::string out;
 };
 
 void RunEval(const EvalArgs& args) {
-  DetectorOptions options;
-  options.mode = ParseDetectionMode(args.mode);
-  args.tuning.ApplyTo(options);
-  options.Validate();
+  const DetectorOptions options = args.detector.Resolve();
   const EvalMetricOptions metrics = BuildMetrics(args);
   const FrameSelectionOptions selection = BuildSelection(args);
   CheckReportFolder(args.out);
@@ -37,7 +33,6 @@ void RunEval(const EvalArgs& args) {
     return Evaluate(detector, options, args.dataset, selection, metrics, job);
   });
   EvalRunInfo info = BuildRunInfo(args, selection, metrics);
-  info.mode = args.mode;
   WriteEvalReport(args.out, info, evaluation.summary, evaluation.run);
   std::printf("%s", SummaryTable(evaluation.summary).c_str());
   std::printf("mean accuracy over objects %.1f %%; time per frame median %.1f ms, p90 %.1f ms\n",
@@ -53,9 +48,6 @@ void AddEvalCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "eval", "Measure detection accuracy (ADD/ADD-S, Proj2D) and time on a BOP dataset");
   AddEvaluationOptions(command, *args);
-  command->add_option("--mode", args->mode, "scene-patch, exhaustive or color-only")
-      ->check(CLI::IsMember({"scene-patch", "exhaustive", "color-only"}))
-      ->capture_default_str();
   command->add_option("--out", args->out, "Folder for report.json and report.md")->required();
   command->callback([args] { RunEval(*args); });
 }

@@ -22,7 +22,7 @@ void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args) {
   command->add_option("--frames", args.frames, "At most this many frames (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  AddDetectorTuningOptions(command, args.tuning);
+  args.detector.AddTo(command);
 }
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args) {
@@ -51,8 +51,7 @@ EvalRunInfo BuildRunInfo(const EvaluationArgs& args, const FrameSelectionOptions
   info.scene_id = selection.scene_id;
   info.min_visib_fract = selection.min_visib_fract;
   info.max_frames = selection.max_frames;
-  info.edge_upper_factor = args.tuning.edge_upper;
-  info.max_refinements = args.tuning.refinements;
+  info.detector = args.detector.Resolve();
   info.metrics = metrics;
   return info;
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/detector_tuning.h"
+#include "cli/detector_flags.h"
 #include "eval/eval_frames.h"
 #include "eval/eval_report.h"
 #include "eval/pose_scoring.h"
@@ -23,10 +23,10 @@ struct EvaluationArgs {
   double min_visib = 0.5;
   double km = 0.1;
   int frames = 0;
-  DetectorTuning tuning;
+  DetectorFlags detector;
 };
 
-// --archive --dataset --scene --targets --min-visib --km --frames --edge-upper --refinements.
+// --archive --dataset --scene --targets --min-visib --km --frames and the detector's flags.
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args);
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args);

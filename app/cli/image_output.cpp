@@ -16,7 +16,8 @@ void WritePng(const std::filesystem::path& path, const cv::Mat& image) {
   if (image.empty() || !cv::imencode(".png", image, bytes)) {
     throw IoError(Quoted(path) + ": cannot encode the image as PNG");
   }
-  WriteFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  WriteFileAtomically(path,
+                      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace layermod::cli

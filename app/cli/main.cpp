@@ -38,8 +38,9 @@ bool IsUnknownCommand(const CLI::App& app, int argc, char** argv) {
 
 int main(int argc, char** argv) {
   layermod::SetLogSink(LogToStderr);
-  CLI::App app{"LayerMOD: multi-scale LineMOD templates and Scene-Patch detection for "
-               "texture-less parts in RGB-D images"};
+  CLI::App app{
+      "LayerMOD: multi-scale LineMOD templates and Scene-Patch detection for "
+      "texture-less parts in RGB-D images"};
   app.set_version_flag("--version", "layermod " + layermod::ToolVersion());
   app.require_subcommand(1);
   layermod::cli::AddTrainCommand(app);

@@ -46,7 +46,8 @@ void RunRender(const RenderArgs& args) {
   fs::create_directories(args.out_dir, ec);
   if (ec) throw IoError("'" + args.out_dir + "': cannot create directory (" + ec.message() + ")");
   int written = 0;
-  for (std::size_t i = 0; i < archive.templates().size(); i += static_cast<std::size_t>(args.every)) {
+  for (std::size_t i = 0; i < archive.templates().size();
+       i += static_cast<std::size_t>(args.every)) {
     const TemplateRecord& record = archive.templates()[i];
     WritePng(fs::path(args.out_dir) / FileName(record), TemplatePicture(archive, record));
     ++written;

@@ -6,6 +6,7 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "pipeline/detector_options.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/quoted.h"
@@ -63,13 +64,12 @@ std::string UtcTimestamp() {
 nlohmann::json RunInfoJson(const EvalRunInfo& info) {
   return {{"dataset", info.dataset_dir},
           {"archives", info.archives},
-          {"mode", info.mode},
+          {"mode", std::string(ModeName(info.detector.mode))},
           {"targets_file", info.targets_file},
           {"scene_id", info.scene_id ? nlohmann::json(*info.scene_id) : nlohmann::json(nullptr)},
           {"min_visib_fract", info.min_visib_fract},
           {"max_frames", info.max_frames},
-          {"edge_upper_factor", info.edge_upper_factor},
-          {"max_refinements", info.max_refinements},
+          {"detector", DetectorOptionsToJson(info.detector)},
           {"km", info.metrics.km},
           {"proj2d_threshold_px", info.metrics.proj2d_threshold_px},
           {"min_box_iou", info.metrics.min_box_iou}};
@@ -144,9 +144,8 @@ std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& sum
   text += "- dataset: `" + info.dataset_dir + "`" +
           (info.scene_id ? " (scene " + std::to_string(*info.scene_id) + ")" : "") + "\n";
   text += "- archives: " + archives + "\n";
-  text += "- mode: " + info.mode + "\n";
-  text += "- coarse positioning upper edge factor: " + Fixed(info.edge_upper_factor, 2) +
-          "; refinement budget: " + std::to_string(info.max_refinements) + "\n";
+  text += "- mode: " + std::string(ModeName(info.detector.mode)) + "\n";
+  text += "- detector settings: " + DetectorOptionsToJson(info.detector).dump() + "\n";
   if (!info.targets_file.empty()) text += "- targets: `" + info.targets_file + "`\n";
   text += "- correct: ADD (ADD-S for symmetric objects) <= " + Fixed(info.metrics.km, 2) +
           " x diameter; Proj2D <= " + Fixed(info.metrics.proj2d_threshold_px, 1) +

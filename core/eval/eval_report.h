@@ -11,6 +11,7 @@
 
 #include "eval/eval_runner.h"
 #include "eval/eval_summary.h"
+#include "pipeline/detector.h"
 
 namespace layermod {
 
@@ -18,13 +19,11 @@ namespace layermod {
 struct EvalRunInfo {
   std::string dataset_dir;
   std::vector<std::string> archives;
-  std::string mode;
   std::string targets_file;  // empty: every annotated instance of the archives' objects
   std::optional<int> scene_id;
   double min_visib_fract = 0.5;
   int max_frames = 0;
-  double edge_upper_factor = 0.0;  // coarse positioning's upper factor (Eq. 5) of the run
-  int max_refinements = 0;         // the matcher's refinement budget of the run
+  DetectorOptions detector;  // every detector setting of the run (bench varies the mode)
   EvalMetricOptions metrics;
 };
 

@@ -50,6 +50,13 @@ bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& o
 
 }  // namespace
 
+double RankingScore(const Detection& detection, bool has_depth) {
+  const double fit = has_depth ? detection.verification.depth_fit : 1.0;
+  return detection.score * fit * fit * detection.verification.color_agreement;
+}
+
+bool RanksHigher(const Detection& a, const Detection& b) { return a.ranking > b.ranking; }
+
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,
                                         const RenderMesh& pose_mesh, const Capture& capture,
@@ -66,18 +73,9 @@ std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
   for (Detection& detection : refined) {
     if (detection.verification.accepted) verified.push_back(std::move(detection));
   }
-  // Rank by appearance, geometry and colour together: a high LineMOD score on a pose the depth
-  // or the colours contradict is worth less than a slightly lower score they confirm. Among
-  // the templates matched at one place, ICP brings neighbouring rotations to poses that pass
-  // the inlier test alike; how closely the depth fits (squared, so that it outweighs the few
-  // points of LineMOD score between them) is what picks the right one.
   const bool has_depth = !capture.depth_mm.empty();
-  auto rank = [has_depth](const Detection& d) {
-    const double fit = has_depth ? d.verification.depth_fit : 1.0;
-    return d.score * fit * fit * d.verification.color_agreement;
-  };
-  std::stable_sort(verified.begin(), verified.end(),
-                   [&](const Detection& a, const Detection& b) { return rank(a) > rank(b); });
+  for (Detection& detection : verified) detection.ranking = RankingScore(detection, has_depth);
+  std::stable_sort(verified.begin(), verified.end(), RanksHigher);
   std::vector<Detection> kept;
   for (Detection& detection : verified) {
     const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const Detection& other) {

@@ -179,15 +179,37 @@ void DetectorOptions::Validate() const {
   }
 }
 
-Detector::Detector(std::vector<TemplateArchive> archives) : archives_(std::move(archives)) {
+Detector::Detector(std::vector<TemplateArchive> archives)
+    : owned_(std::make_shared<const std::vector<TemplateArchive>>(std::move(archives))) {
+  for (const TemplateArchive& archive : *owned_) archives_.emplace_back(owned_, &archive);
+  IndexObjects();
+}
+
+Detector::Detector(std::vector<std::shared_ptr<const TemplateArchive>> archives)
+    : archives_(std::move(archives)) {
+  for (const auto& archive : archives_) {
+    if (archive == nullptr) throw Error("detector: null archive");
+  }
+  IndexObjects();
+}
+
+const std::vector<TemplateArchive>& Detector::archives() const {
+  if (owned_ == nullptr) {
+    throw Error("detector: built from shared archives; use archive_count() and archive(i)");
+  }
+  return *owned_;
+}
+
+void Detector::IndexObjects() {
   if (archives_.empty()) throw Error("detector: no archive");
   std::set<std::int32_t> seen;
-  const FeatureOptions& reference = archives_.front().manifest().objects.at(0).profile.features;
+  const FeatureOptions& reference = archives_.front()->manifest().objects.at(0).profile.features;
   for (std::size_t a = 0; a < archives_.size(); ++a) {
-    if (!SameIntrinsics(archives_[a].camera(), camera())) {
+    const TemplateArchive& archive = *archives_[a];
+    if (!SameIntrinsics(archive.camera(), camera())) {
       throw Error("detector: archives were trained for different cameras");
     }
-    for (const ArchiveObject& object : archives_[a].manifest().objects) {
+    for (const ArchiveObject& object : archive.manifest().objects) {
       if (!seen.insert(object.obj_id).second) {
         throw Error("detector: object id " + std::to_string(object.obj_id) + " appears twice");
       }
@@ -197,8 +219,7 @@ Detector::Detector(std::vector<TemplateArchive> archives) : archives_(std::move(
             "thresholds); train them with the same profile features");
       }
       objects_.push_back(
-          {a, object.obj_id, EdgeRanges(archives_[a], object),
-           LargestTemplate(archives_[a], object),
+          {a, object.obj_id, EdgeRanges(archive, object), LargestTemplate(archive, object),
            SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm)});
     }
   }
@@ -210,7 +231,7 @@ const ArchiveObject& Detector::Object(std::int32_t obj_id) const {
 
 const TemplateArchive& Detector::ArchiveOf(std::int32_t obj_id) const {
   for (const ObjectEntry& entry : objects_) {
-    if (entry.obj_id == obj_id) return archives_[entry.archive];
+    if (entry.obj_id == obj_id) return *archives_[entry.archive];
   }
   throw Error("detector: no object " + std::to_string(obj_id));
 }
@@ -220,7 +241,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   ValidateCapture(capture, camera(), options.mode);
   const auto start = Clock::now();
   DetectionResult result;
-  const FeatureOptions& features = archives_.front().manifest().objects.at(0).profile.features;
+  const FeatureOptions& features = archives_.front()->manifest().objects.at(0).profile.features;
   const bool scene_patch = options.mode == DetectionMode::kScenePatch;
   Capture used = capture;
   if (options.mode == DetectionMode::kColorOnly) used.depth_mm = cv::Mat();
@@ -251,7 +272,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
         });
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       const ObjectEntry& entry = objects_[i];
-      const ArchiveObject& object = archives_[entry.archive].Object(entry.obj_id);
+      const ArchiveObject& object = archives_[entry.archive]->Object(entry.obj_id);
       ObjectDiagnostics& diagnostics = result.diagnostics[i];
       auto stage_start = Clock::now();
       diagnostics.division =
@@ -278,7 +299,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
 
   for (std::size_t i = 0; i < objects_.size(); ++i) {
     const ObjectEntry& entry = objects_[i];
-    const TemplateArchive& archive = archives_[entry.archive];
+    const TemplateArchive& archive = *archives_[entry.archive];
     const ArchiveObject& object = archive.Object(entry.obj_id);
     ObjectDiagnostics& diagnostics = result.diagnostics[i];
     diagnostics.obj_id = entry.obj_id;
@@ -299,8 +320,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     result.timings.pose_ms += MsSince(stage_start);
     for (Detection& detection : detections) result.detections.push_back(std::move(detection));
   }
-  std::stable_sort(result.detections.begin(), result.detections.end(),
-                   [](const Detection& a, const Detection& b) { return a.score > b.score; });
+  std::stable_sort(result.detections.begin(), result.detections.end(), RanksHigher);
   result.timings.total_ms = MsSince(start);
   return result;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,7 +48,8 @@ struct Capture {
 struct Detection {
   std::int32_t obj_id = 0;
   std::string name;
-  float score = 0.0f;  // LineMOD similarity of the matched template, percent
+  float score = 0.0f;    // LineMOD similarity of the matched template, percent
+  double ranking = 0.0;  // what detections are ordered by (RankingScore), percent
   Pose cam_from_model;
   std::uint32_t template_id = 0;
   int layer_index = 0;
@@ -78,7 +80,7 @@ struct ObjectDiagnostics {
 };
 
 struct DetectionResult {
-  std::vector<Detection> detections;  // best first
+  std::vector<Detection> detections;  // best first by `ranking`, over all objects
   StageTimings timings;
   std::vector<ObjectDiagnostics> diagnostics;
 };
@@ -89,13 +91,20 @@ class Detector {
   // Throws Error when archives disagree on the camera or the feature parameters, or an object id
   // appears twice.
   explicit Detector(std::vector<TemplateArchive> archives);
+  // The same with archives shared rather than moved in (the public API's archives are shared
+  // handles; a detector built from them copies no template).
+  explicit Detector(std::vector<std::shared_ptr<const TemplateArchive>> archives);
 
   // Throws Error for an unusable capture: sizes that differ from the camera, wrong pixel types,
   // intrinsics other than the archives', depth required by the mode but absent.
   DetectionResult Detect(const Capture& capture, const DetectorOptions& options) const;
 
-  const std::vector<TemplateArchive>& archives() const { return archives_; }
-  const PinholeCamera& camera() const { return archives_.front().camera(); }
+  // The archives given by value. Throws Error for a detector built from shared archives: use
+  // archive_count() and archive(i), which serve both.
+  const std::vector<TemplateArchive>& archives() const;
+  std::size_t archive_count() const { return archives_.size(); }
+  const TemplateArchive& archive(std::size_t index) const { return *archives_.at(index); }
+  const PinholeCamera& camera() const { return archives_.front()->camera(); }
   const ArchiveObject& Object(std::int32_t obj_id) const;
   const TemplateArchive& ArchiveOf(std::int32_t obj_id) const;
 
@@ -108,7 +117,10 @@ class Detector {
     RenderMesh pose_mesh;                     // the mesh ICP and verification render
   };
 
-  std::vector<TemplateArchive> archives_;
+  void IndexObjects();  // fills objects_ from archives_; throws Error for inconsistent archives
+
+  std::shared_ptr<const std::vector<TemplateArchive>> owned_;  // by-value construction only
+  std::vector<std::shared_ptr<const TemplateArchive>> archives_;  // into owned_ or shared
   std::vector<ObjectEntry> objects_;
 };
 

@@ -51,7 +51,7 @@ EvalRunInfo Info() {
   EvalRunInfo info;
   info.dataset_dir = "/data/synth";
   info.archives = {"a.layermod"};
-  info.mode = "exhaustive";
+  info.detector.mode = DetectionMode::kExhaustive;
   info.scene_id = 1;
   return info;
 }

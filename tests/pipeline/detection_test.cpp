@@ -82,7 +82,8 @@ TEST_F(CanDetectionTest, ScenePatchFindsTheCanInClutteredScenes) {
       if (result.detections.empty()) continue;
       const Detection& best = result.detections.front();
       EXPECT_EQ(best.obj_id, kCan);
-      const double add_mm = AddErrorMm(can.mesh, best.cam_from_model, frame.gt.front().cam_from_model);
+      const double add_mm =
+          AddErrorMm(can.mesh, best.cam_from_model, frame.gt.front().cam_from_model);
       correct += add_mm <= 0.1 * can.diameter_mm ? 1 : 0;
     }
   }

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+// The one table of detector settings. Every field has a name (the JSON key; with '_' turned
+// into '-' it is the command-line flag), a help line and a range. The CLI flags of `detect`,
+// `eval` and `bench`, the studio's form and its saved settings, the detector profiles
+// (`--detector-profile FILE`) and the eval/bench reports are all built from it, so a knob
+// exists everywhere or nowhere.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pipeline/detector.h"
+
+namespace layermod {
+
+struct DetectorOptionField {
+  std::string_view key;    // JSON key, e.g. "edge_upper"; flag "--edge-upper"
+  std::string_view help;   // one line, with the unit
+  std::string_view group;  // "matching", "coarse positioning", ... (the studio groups by it)
+  double min = 0.0;        // inclusive range of numeric fields
+  double max = 0.0;
+};
+
+// The command-line flag of a field: "--" + key with '_' -> '-'.
+std::string OptionFlag(const DetectorOptionField& field);
+// A range bound as the help and errors print it ("100", "0.5", "1e+07").
+std::string FormatRange(double value);
+
+// Calls visitor(field, value&) for every setting of `options`, in table order. `value` is an
+// int&, float&, double& or DetectionMode&.
+template <typename Options, typename Visitor>
+void VisitDetectorOptions(Options& options, Visitor&& visitor) {
+  using G = std::string_view;
+  const G matching = "matching", coarse = "coarse positioning", regions = "region division",
+          pose = "pose refinement", verify = "verification", output = "output";
+  visitor(DetectorOptionField{"mode", "scene-patch, exhaustive or color-only", matching, 0, 0},
+          options.mode);
+  visitor(DetectorOptionField{"instances", "Detections kept per object", output, 1, 1000},
+          options.max_instances);
+  visitor(DetectorOptionField{"pose_candidates",
+                              "Best raw matches per object that get a pose and a verification",
+                              pose, 1, 1000},
+          options.pose_candidates);
+  visitor(
+      DetectorOptionField{"threshold", "Match similarity threshold (percent)", matching, 1, 100},
+      options.match.threshold_percent);
+  visitor(DetectorOptionField{"nms_radius",
+                              "Matches of one object closer than this are "
+                              "duplicates (level-0 px)",
+                              matching, 0, 1000},
+          options.match.nms_radius_px);
+  visitor(DetectorOptionField{"matches_per_location",
+                              "Matches kept per neighbourhood of the NMS radius", matching, 1, 100},
+          options.match.matches_per_location);
+  visitor(DetectorOptionField{"max_matches", "Best matches kept after suppression", matching, 1,
+                              100000},
+          options.match.max_matches);
+  visitor(DetectorOptionField{"candidates_per_template", "Top-level positions refined per template",
+                              matching, 1, 100000},
+          options.match.max_candidates_per_template);
+  visitor(DetectorOptionField{"refinements",
+                              "Top-level hits refined down the pyramid per object and frame",
+                              matching, 1, 1e7},
+          options.match.max_refinements);
+  visitor(DetectorOptionField{"blocks", "Scene blocks kept by coarse positioning (0 = all)", coarse,
+                              0, 1000},
+          options.coarse.max_blocks);
+  visitor(DetectorOptionField{"edge_lower",
+                              "Depth-edge test's lower factor: num_i >= factor x N_min (Eq. 5)",
+                              coarse, 0, 10},
+          options.coarse.lower_factor);
+  visitor(DetectorOptionField{"edge_upper",
+                              "Depth-edge test's upper factor: num_i <= factor x N_max (Eq. 5)",
+                              coarse, 0, 10},
+          options.coarse.upper_factor);
+  visitor(DetectorOptionField{"point_step", "Spacing of detection points in a block (px)", coarse,
+                              1, 256},
+          options.coarse.point_step_px);
+  visitor(DetectorOptionField{"hole_fill",
+                              "Depth holes up to this wide are filled before edges "
+                              "are counted (px)",
+                              coarse, 0, 256},
+          options.coarse.hole_fill_px);
+  visitor(DetectorOptionField{"cell_size", "Region division's cell size (px)", regions, 1, 256},
+          options.regions.cell_size_px);
+  visitor(DetectorOptionField{"seed_step", "Region seeds every this many cells", regions, 1, 256},
+          options.regions.seed_step_cells);
+  visitor(DetectorOptionField{"depth_spread",
+                              "A region's largest depth spread, Eq. 1 "
+                              "(mm, 0 = the sphere radius)",
+                              regions, 0, 1e5},
+          options.regions.depth_spread_mm);
+  visitor(DetectorOptionField{"max_layer_distance",
+                              "Regions farther than this from every layer "
+                              "are dropped (mm, 0 = the sphere radius)",
+                              regions, 0, 1e5},
+          options.regions.max_layer_distance_mm);
+  visitor(DetectorOptionField{"min_block_cells", "Smaller regions are dropped (cells)", regions, 1,
+                              1e6},
+          options.regions.min_block_cells);
+  visitor(DetectorOptionField{"icp_iterations", "ICP iterations at most", pose, 0, 1000},
+          options.icp.max_iterations);
+  visitor(
+      DetectorOptionField{"icp_renders", "Visible-surface re-samplings during ICP", pose, 1, 100},
+      options.icp.renders);
+  visitor(DetectorOptionField{"icp_initial_gate", "ICP correspondence gate at the start (mm)", pose,
+                              0, 1e4},
+          options.icp.initial_max_distance_mm);
+  visitor(DetectorOptionField{"icp_final_gate", "ICP correspondence gate at the end (mm)", pose, 0,
+                              1e4},
+          options.icp.final_max_distance_mm);
+  visitor(DetectorOptionField{"icp_huber", "ICP robust loss scale (mm)", pose, 0, 1e4},
+          options.icp.huber_mm);
+  visitor(DetectorOptionField{"icp_sample_step", "ICP visible-surface sampling step (px)", pose, 1,
+                              256},
+          options.icp.sample_step_px);
+  visitor(
+      DetectorOptionField{"icp_convergence", "ICP stops when points move less (mm)", pose, 0, 1e3},
+      options.icp.convergence_mm);
+  visitor(DetectorOptionField{"icp_max_step", "Largest ICP translation step (mm)", pose, 0, 1e4},
+          options.icp.max_step_mm);
+  visitor(DetectorOptionField{"icp_max_step_deg", "Largest ICP rotation step (deg)", pose, 0, 180},
+          options.icp.max_step_deg);
+  visitor(
+      DetectorOptionField{"icp_max_drift", "ICP is abandoned beyond this drift (mm)", pose, 0, 1e5},
+      options.icp.max_drift_mm);
+  visitor(DetectorOptionField{"icp_max_drift_deg", "ICP is abandoned beyond this drift (deg)", pose,
+                              0, 180},
+          options.icp.max_drift_deg);
+  visitor(DetectorOptionField{"depth_tolerance", "Scene and model depth agree within this (mm)",
+                              verify, 0, 1e4},
+          options.verification.depth_tolerance_mm);
+  visitor(DetectorOptionField{"min_inlier_ratio", "Depth inlier ratio a pose needs", verify, 0, 1},
+          options.verification.min_depth_inlier_ratio);
+  visitor(
+      DetectorOptionField{"min_visible_ratio",
+                          "Share of the silhouette the scene must not contradict", verify, 0, 1},
+      options.verification.min_visible_ratio);
+  visitor(
+      DetectorOptionField{"hue_tolerance", "Hue difference still agreeing (deg)", verify, 0, 180},
+      options.verification.hue_tolerance_deg);
+  visitor(
+      DetectorOptionField{"min_color_agreement",
+                          "Colour agreement a pose needs (saturated models only)", verify, 0, 1},
+      options.verification.min_color_agreement);
+}
+
+// Every field by name, for the studio and reports.
+std::vector<DetectorOptionField> DetectorOptionFields();
+
+// All fields, mode as its name ("scene-patch").
+nlohmann::json DetectorOptionsToJson(const DetectorOptions& options);
+
+// Fields present in `json` replace those of `base`; absent ones keep base's value. Throws
+// FormatError naming `what` and the field for unknown keys, wrong types and out-of-range values.
+DetectorOptions DetectorOptionsFromJson(const nlohmann::json& json, std::string_view what,
+                                        DetectorOptions base = {});
+
+// A detector profile file: a JSON object of fields (or {"detector": {...}}). Throws IoError or
+// FormatError naming the file.
+DetectorOptions ReadDetectorProfile(const std::filesystem::path& path, DetectorOptions base = {});
+void WriteDetectorProfile(const std::filesystem::path& path, const DetectorOptions& options);
+
+}  // namespace layermod
