@@ -266,16 +266,35 @@ TriangleSoup ParseSoup(const std::string& bytes, const std::string& name) {
   return soup;
 }
 
+namespace {
+
+// In a CMake build tree (an ancestor of the executable holding CMakeCache.txt) the helper is in
+// its app/ folder. Found at run time, so that the installed library carries no build path.
+fs::path BuildTreeImporter(const fs::path& self_dir) {
+  std::error_code ec;
+  for (fs::path dir = self_dir; !dir.empty(); dir = dir.parent_path()) {
+    if (fs::is_regular_file(dir / "CMakeCache.txt", ec)) {
+      const fs::path candidate = dir / "app" / kMeshImporterName;
+      return fs::is_regular_file(candidate, ec) ? candidate : fs::path();
+    }
+    if (dir == dir.parent_path()) break;
+  }
+  return {};
+}
+
+}  // namespace
+
 fs::path MeshImporterPath() {
   if (const char* env = std::getenv(kMeshImporterEnv); env != nullptr && *env != '\0') return env;
   std::error_code ec;
   const fs::path self_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (ec) return {};
   for (const fs::path& candidate :
        {self_dir / kMeshImporterName, self_dir / ".." / "libexec" / "layermod" / kMeshImporterName,
-        fs::path(LAYERMOD_IMPORTER_BUILD_PATH), fs::path(LAYERMOD_IMPORTER_INSTALL_PATH)}) {
-    if (!ec && fs::is_regular_file(candidate)) return candidate;
+        fs::path(LAYERMOD_IMPORTER_INSTALL_PATH), fs::path(LAYERMOD_IMPORTER_PACKAGE_PATH)}) {
+    if (fs::is_regular_file(candidate, ec)) return candidate;
   }
-  return {};
+  return BuildTreeImporter(self_dir);
 }
 
 TriangleSoup ImportTriangles(const fs::path& path, const MeshImportOptions& options) {

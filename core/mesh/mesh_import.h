@@ -34,7 +34,8 @@ struct MeshImportOptions {
 
 // The helper executable that imports in its own process, and how it is found: the environment
 // variable, then beside the running executable, then in ../libexec/layermod/ from it (installed
-// layout), then where the build put it and where it installs it.
+// layout), then in the install prefix's and the Debian package's libexec/layermod/ (programs
+// linking the installed library live elsewhere), then, in a CMake build tree, in its app/.
 inline constexpr char kMeshImporterName[] = "layermod-import-mesh";
 inline constexpr char kMeshImporterEnv[] = "LAYERMOD_MESH_IMPORTER";
 std::filesystem::path MeshImporterPath();  // empty when not found

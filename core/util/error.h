@@ -1,33 +1,6 @@
 // SPDX-License-Identifier: MIT
+// The exception family lives in the public API (<layermod/error.h>) so that the core's errors
+// and the API's are the same types.
 #pragma once
 
-#include <stdexcept>
-#include <string>
-
-namespace layermod {
-
-// Broken precondition or invalid argument (bad range, bad option value).
-class Error : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// A file could not be opened, read or written. The message names the file.
-class IoError : public Error {
- public:
-  using Error::Error;
-};
-
-// A file was read but its content is malformed, truncated or foreign. The message names the file.
-class FormatError : public Error {
- public:
-  using Error::Error;
-};
-
-// A long job was cancelled through its CancelToken. Not an error: its own outcome.
-class Cancelled : public std::exception {
- public:
-  const char* what() const noexcept override { return "cancelled"; }
-};
-
-}  // namespace layermod
+#include <layermod/error.h>
