@@ -247,7 +247,21 @@ void ViewsPanel::OnModelChanged() {
   UpdatePlan();
 }
 
-void ViewsPanel::ScheduleUpdate() { debounce_->start(); }
+void ViewsPanel::ScheduleUpdate() {
+  ShowUnusedGridBoxes();
+  debounce_->start();
+}
+
+void ViewsPanel::ShowUnusedGridBoxes() {
+  // Even spacing samples the elevation range only (geometry/views.h): the azimuth row and the
+  // elevation step are unused, and look it.
+  const bool grid = even_spacing_->value() <= 0.0;
+  const QString unused = grid ? QString() : tr("Unused while even spacing is above 0");
+  for (QDoubleSpinBox* box : {angles_[0][0], angles_[0][1], angles_[0][2], angles_[1][1]}) {
+    box->setEnabled(grid);
+    box->setToolTip(unused);
+  }
+}
 
 void ViewsPanel::UpdatePlan() {
   debounce_->stop();

@@ -59,6 +59,7 @@ class ViewsPanel : public QWidget {
   QWidget* BuildFeaturesBox();
   void OnModelChanged();
   void ScheduleUpdate();
+  void ShowUnusedGridBoxes();
 
   StudioSession* session_;
   TrainingProfile base_;  // fields the form does not show are kept from here

@@ -85,6 +85,18 @@ class ViewsPanelTest : public QObject {
     QCOMPARE(panel_->plan()->views.size(), SampleViews(request.profile.views).size());
   }
 
+  void EvenSpacingGreysTheUnusedGridBoxes() {
+    auto* azimuth_step = panel_->findChild<QDoubleSpinBox*>("azimuthstepBox");
+    auto* elevation_min = panel_->findChild<QDoubleSpinBox*>("elevationminBox");
+    auto* elevation_step = panel_->findChild<QDoubleSpinBox*>("elevationstepBox");
+    SetBox("evenSpacingBox", 0.0);
+    QVERIFY(azimuth_step->isEnabled() && elevation_step->isEnabled());
+    SetBox("evenSpacingBox", 10.0);
+    QVERIFY(!azimuth_step->isEnabled());
+    QVERIFY(!elevation_step->isEnabled());
+    QVERIFY(elevation_min->isEnabled());  // the elevation range still limits the directions
+  }
+
   void InvalidRangeSaysWhy() {
     session_->SetModel(model_);
     SetBox("depthMinBox", 900.0);
