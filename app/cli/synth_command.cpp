@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "geometry/up_axis.h"
 #include "cli/progress_job.h"
 #include "geometry/camera.h"
 #include "synth/synthesizer.h"
@@ -25,6 +26,7 @@ struct SynthArgs {
   double dmax_mm = 1150.0;
   std::string backgrounds;
   std::string camera;
+  std::string up_axis = "+z";
   int clutter = 3;
   bool no_noise = false;
   int threads = 0;
@@ -55,6 +57,7 @@ SynthOptions BuildOptions(const SynthArgs& args) {
   options.dmax_mm = args.dmax_mm;
   options.backgrounds_dir = args.backgrounds;
   options.clutter = args.clutter;
+  options.upright_from_model = UprightFromUpAxis(args.up_axis);
   options.noise.enabled = !args.no_noise;
   options.threads = args.threads;
   options.out_dir = args.out;
@@ -81,8 +84,8 @@ void PrintSummary(const SynthSummary& summary) {
 
 void RunSynth(const SynthArgs& args) {
   const SynthOptions options = BuildOptions(args);
-  const SynthSummary summary = RunWithProgress(
-      [&](const JobControl& job) { return SynthesizeScenes(options, job); });
+  const SynthSummary summary =
+      RunWithProgress([&](const JobControl& job) { return SynthesizeScenes(options, job); });
   PrintSummary(summary);
 }
 
@@ -115,6 +118,11 @@ void AddSynthCommand(CLI::App& app) {
                    "Up to this many other models and primitives around the target (0..5)")
       ->capture_default_str();
   command->add_flag("--no-noise", args->no_noise, "Write the noiseless renders (no sensor model)");
+  command
+      ->add_option("--up-axis", args->up_axis,
+                   "The models' axis that points up when they stand on the table")
+      ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z"}))
+      ->capture_default_str();
   command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--out", args->out, "Dataset folder to create (new or empty)")->required();

@@ -1,17 +1,21 @@
 // SPDX-License-Identifier: MIT
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
+#include "dataset/bop_json.h"
 #include "geometry/units.h"
+#include "geometry/up_axis.h"
 #include "mesh/model.h"
 #include "pipeline/training.h"
 #include "templates/archive.h"
 #include "util/atomic_file.h"
 #include "util/log.h"
+#include "util/quoted.h"
 
 namespace layermod::cli {
 namespace {
@@ -27,6 +31,9 @@ struct TrainArgs {
   std::string azimuth;
   std::string elevation;
   std::string roll;
+  std::string up_axis;
+  std::string up_rotation;
+  std::string view_preset;
   std::int32_t obj_id = 1;
   double dmin_mm = 0.0;
   double dmax_mm = 0.0;
@@ -37,13 +44,31 @@ struct TrainArgs {
   std::size_t max_triangles = TrainingRequest{}.max_render_triangles;
 };
 
+// --up-rotation FILE: a JSON file holding {"upright_from_model": [9 numbers, row-major]}.
+Eigen::Matrix3d LoadUprightRotation(const std::string& path) {
+  const nlohmann::json json = bop_internal::ParseJsonObjectFile(path);
+  TrainingProfile probe;
+  try {
+    probe = TrainingProfileFromJson({{"views", json}});
+  } catch (const FormatError& error) {
+    throw FormatError(Quoted(path) + ": " + error.what());
+  }
+  if (!json.contains("upright_from_model") && !json.contains("up_axis")) {
+    throw FormatError(Quoted(path) + ": needs \"upright_from_model\": [9 numbers, row-major]");
+  }
+  return probe.views.upright_from_model;
+}
+
 // Profile: the file if given, else the defaults; explicit flags win.
 TrainingProfile BuildProfile(const TrainArgs& args) {
-  TrainingProfile profile = args.profile.empty() ? TrainingProfile{}
-                                                 : LoadTrainingProfile(args.profile);
+  TrainingProfile profile =
+      args.profile.empty() ? TrainingProfile{} : LoadTrainingProfile(args.profile);
   if (args.dmin_mm != 0.0) profile.depth_min_mm = args.dmin_mm;
   if (args.dmax_mm != 0.0) profile.depth_max_mm = args.dmax_mm;
   ViewSamplingOptions& views = profile.views;
+  if (!args.up_rotation.empty()) views.upright_from_model = LoadUprightRotation(args.up_rotation);
+  if (!args.up_axis.empty()) views.upright_from_model = UprightFromUpAxis(args.up_axis);
+  if (!args.view_preset.empty()) views = ViewPreset(args.view_preset, views.upright_from_model);
   if (!args.azimuth.empty()) views.azimuth = AngleRange::Parse(args.azimuth, "--azimuth");
   if (!args.elevation.empty()) views.elevation = AngleRange::Parse(args.elevation, "--elevation");
   if (!args.roll.empty()) views.roll = AngleRange::Parse(args.roll, "--roll");
@@ -66,6 +91,13 @@ void PrintSummary(const TrainingSummary& summary, const std::string& out) {
   std::printf("archive       %s\n", out.c_str());
 }
 
+std::string UpAxisText(const Eigen::Matrix3d& upright_from_model) {
+  const Eigen::Vector3d up = UpDirectionInModel(upright_from_model);
+  char text[96];
+  std::snprintf(text, sizeof text, "model (%.3f, %.3f, %.3f)", up.x(), up.y(), up.z());
+  return UpAxisName(upright_from_model).value_or(text);
+}
+
 // The plan alone: what a run would make, and roughly how much memory it takes.
 void PrintPlan(const TrainingPlan& plan, const TrainingRequest& request) {
   std::printf("radius        %.2f mm (diameter %.2f mm)\n", plan.radius_mm, 2.0 * plan.radius_mm);
@@ -73,6 +105,7 @@ void PrintPlan(const TrainingPlan& plan, const TrainingRequest& request) {
   for (double depth_mm : plan.layer_depths_mm) std::printf(" %.0f", depth_mm);
   std::printf(" mm\n");
   std::printf("views         %zu per layer\n", plan.views.size());
+  std::printf("up axis       %s\n", UpAxisText(request.profile.views.upright_from_model).c_str());
   std::printf("templates     %zu\n", plan.TemplateCount());
   std::printf("memory        about %.1f MiB for the templates\n",
               static_cast<double>(plan.EstimatedBytes(request.profile.features)) / (1 << 20));
@@ -106,11 +139,9 @@ void RunTrain(const TrainArgs& args) {
                plan.radius_mm);
 
   ProgressBar bar;
-  const JobControl job(
-      [&bar](std::size_t done, std::size_t total, std::string_view stage) {
-        bar.Update(done, total, stage);
-      },
-      &cancel);
+  const JobControl job([&bar](std::size_t done, std::size_t total,
+                              std::string_view stage) { bar.Update(done, total, stage); },
+                       &cancel);
   TrainingResult result = TrainTemplates(model, request, job);
   bar.Finish();
   job.ThrowIfCancelled();
@@ -134,6 +165,19 @@ void AddTrainCommand(CLI::App& app) {
   command->add_option("--profile", args->profile, "Training profile JSON (flags override it)");
   command->add_option("--dmin", args->dmin_mm, "Nearest object distance D_min (mm)");
   command->add_option("--dmax", args->dmax_mm, "Farthest object distance D_max (mm)");
+  command
+      ->add_option("--up-axis", args->up_axis,
+                   "The model axis that points up when the part stands as used; the view angles "
+                   "are measured from it (default +z)")
+      ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z"}));
+  command->add_option("--up-rotation", args->up_rotation,
+                      "JSON file with an arbitrary model-to-upright rotation "
+                      "{\"upright_from_model\": [9 numbers]}");
+  command
+      ->add_option("--view-preset", args->view_preset,
+                   "tabletop (upper hemisphere, roll -45..45) or full (whole sphere, any roll); "
+                   "--azimuth/--elevation/--roll/--even-views override it")
+      ->check(CLI::IsMember({"tabletop", "full"}));
   command->add_option("--azimuth", args->azimuth, "Azimuth grid min:step:max (deg)");
   command->add_option("--elevation", args->elevation, "Elevation grid min:step:max (deg)");
   command->add_option("--roll", args->roll, "In-plane rotation grid min:step:max (deg)");
@@ -143,8 +187,9 @@ void AddTrainCommand(CLI::App& app) {
                       "Colour-gradient features per template");
   command->add_option("--normal-features", args->normal_features,
                       "Depth-normal features per template");
-  command->add_option("--max-triangles", args->max_triangles,
-                      "Simplify heavier meshes to this many triangles for rendering (0 = never)")
+  command
+      ->add_option("--max-triangles", args->max_triangles,
+                   "Simplify heavier meshes to this many triangles for rendering (0 = never)")
       ->capture_default_str();
   command->add_option("--units", args->units, "Units of the mesh file: mm or m")
       ->check(CLI::IsMember({"mm", "m"}))

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "geometry/up_axis.h"
 #include "util/error.h"
 
 namespace layermod {
@@ -122,6 +123,7 @@ void ViewSamplingOptions::Validate() const {
       (even_spacing_deg > 0.0 && even_spacing_deg < 0.5)) {
     throw Error("even view spacing: must be 0 (grid) or at least 0.5 degrees");
   }
+  ValidateRotation(upright_from_model, "up rotation (upright_from_model)");
 }
 
 std::size_t CountViews(const ViewSamplingOptions& options) {
@@ -159,11 +161,14 @@ std::vector<ViewAngles> SampleViews(const ViewSamplingOptions& options) {
   return views;
 }
 
-Pose CamFromModelForView(const ViewAngles& view, const Eigen::Vector3d& centre_in_model,
-                         double distance_mm) {
+namespace {
+
+// The view's camera pose in the upright frame.
+Pose CamFromUprightForView(const ViewAngles& view, const Eigen::Vector3d& centre_in_upright,
+                           double distance_mm) {
   const Eigen::Vector3d to_camera = DirectionFromAngles(view.azimuth_deg, view.elevation_deg);
   const Eigen::Vector3d forward = -to_camera;  // camera +Z, towards the object
-  // Camera +Y points down in the image: align it with the object's -Z, projected on the image
+  // Camera +Y points down in the image: align it with the upright -Z, projected on the image
   // plane. At the poles that is undefined; use the azimuth direction instead.
   Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();
   down -= down.dot(forward) * forward;
@@ -173,17 +178,26 @@ Pose CamFromModelForView(const ViewAngles& view, const Eigen::Vector3d& centre_i
   }
   down.normalize();
   const Eigen::Vector3d right = down.cross(forward);
-  Eigen::Matrix3d cam_from_model_rotation;
-  cam_from_model_rotation.row(0) = right.transpose();
-  cam_from_model_rotation.row(1) = down.transpose();
-  cam_from_model_rotation.row(2) = forward.transpose();
+  Eigen::Matrix3d cam_from_upright_rotation;
+  cam_from_upright_rotation.row(0) = right.transpose();
+  cam_from_upright_rotation.row(1) = down.transpose();
+  cam_from_upright_rotation.row(2) = forward.transpose();
   const Eigen::Matrix3d roll =
       Eigen::AngleAxisd(DegToRad(view.roll_deg), Eigen::Vector3d::UnitZ()).toRotationMatrix();
   Pose pose;
-  pose.R = roll * cam_from_model_rotation;
-  const Eigen::Vector3d camera_position = centre_in_model + distance_mm * to_camera;
+  pose.R = roll * cam_from_upright_rotation;
+  const Eigen::Vector3d camera_position = centre_in_upright + distance_mm * to_camera;
   pose.t = -(pose.R * camera_position);
   return pose;
+}
+
+}  // namespace
+
+Pose CamFromModelForView(const ViewAngles& view, const Eigen::Vector3d& centre_in_model,
+                         double distance_mm, const Eigen::Matrix3d& upright_from_model) {
+  const Pose cam_from_upright =
+      CamFromUprightForView(view, upright_from_model * centre_in_model, distance_mm);
+  return {cam_from_upright.R * upright_from_model, cam_from_upright.t};
 }
 
 std::vector<double> DepthLayers(double min_mm, double max_mm, double step_mm) {

@@ -25,9 +25,9 @@ struct AngleRange {
   bool operator==(const AngleRange&) const = default;
 };
 
-// Viewpoint on the sphere around the object: the camera sits at azimuth/elevation (object +Z up,
-// elevation measured from the object's XY plane), looks at the sphere centre, and is rolled about
-// its optical axis.
+// Viewpoint on the sphere around the object: the camera sits at azimuth/elevation (measured in the
+// object's upright frame, geometry/up_axis.h: +Z up, elevation from the XY plane), looks at the
+// sphere centre, and is rolled about its optical axis.
 struct ViewAngles {
   double azimuth_deg = 0.0;
   double elevation_deg = 0.0;
@@ -41,6 +41,9 @@ struct ViewSamplingOptions {
   // When > 0: sample camera directions evenly on the view sphere (Fibonacci lattice) with about
   // this angular spacing, limited to the elevation range, instead of the azimuth/elevation grid.
   double even_spacing_deg = 0.0;
+  // The model's reference orientation (geometry/up_axis.h): the angles above are measured in the
+  // frame this rotation takes the model to. Identity: the model's +Z is up.
+  Eigen::Matrix3d upright_from_model = Eigen::Matrix3d::Identity();
 
   void Validate() const;
   bool operator==(const ViewSamplingOptions&) const = default;
@@ -57,9 +60,11 @@ std::size_t CountViews(const ViewSamplingOptions& options);
 std::vector<ViewAngles> SampleViews(const ViewSamplingOptions& options);
 
 // Camera pose that sees the sphere centre `centre_in_model` at distance `distance_mm` on the
-// optical axis, from `view`. Image "up" follows the object's +Z, then `roll_deg` is applied.
+// optical axis, from `view` (angles in the upright frame of `upright_from_model`). Image "up"
+// follows the upright +Z, then `roll_deg` is applied. Returns the true cam_from_model.
 Pose CamFromModelForView(const ViewAngles& view, const Eigen::Vector3d& centre_in_model,
-                         double distance_mm);
+                         double distance_mm,
+                         const Eigen::Matrix3d& upright_from_model = Eigen::Matrix3d::Identity());
 
 // Depth layers covering [min_mm, max_mm] with a step of at most `step_mm` (the sphere radius, paper
 // §3.1), so that no depth of the range is farther than step_mm / 2 from a layer. Throws Error on

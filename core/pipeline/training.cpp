@@ -69,7 +69,8 @@ TemplateRecord TrainOneTemplate(const TemplateContext& context, std::uint16_t la
   record.layer_index = layer_index;
   record.layer_depth_mm = static_cast<float>(layer_depth_mm);
   record.view = view;
-  record.cam_from_model = CamFromModelForView(view, context.model.sphere.centre, layer_depth_mm);
+  record.cam_from_model = CamFromModelForView(view, context.model.sphere.centre, layer_depth_mm,
+                                              context.request.profile.views.upright_from_model);
 
   const RenderedView rendered = RenderView(context.mesh, camera, record.cam_from_model);
   const ExtractedTemplate extracted = ExtractTemplate(rendered, camera, features);

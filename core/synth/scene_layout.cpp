@@ -141,10 +141,11 @@ std::optional<PlacedItem> PlaceNear(const SceneLayout& layout, const RenderMesh&
 
 PlacedItem PlaceUpright(const RenderMesh& mesh, const Sphere& sphere, std::int32_t obj_id,
                         double yaw_rad, const Eigen::Vector3d& tilt_axis, double tilt_rad,
-                        const Eigen::Vector2d& xy) {
+                        const Eigen::Vector2d& xy, const Eigen::Matrix3d& upright_from_model) {
   const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
                                     Eigen::AngleAxisd(tilt_rad, tilt_axis.normalized()))
-                                       .toRotationMatrix();
+                                       .toRotationMatrix() *
+                                   upright_from_model;
   const Eigen::Vector3d centre = rotation * sphere.centre;
   double min_z = 0.0;
   double radius_xy = 0.0;
@@ -168,7 +169,7 @@ PlacedItem PlaceRandomUpright(const RenderMesh& mesh, const Sphere& sphere, std:
   const double tilt_azimuth = Uniform(rng, -kPi, kPi);
   const double tilt = DegToRad(Uniform(rng, 0.0, options.max_tilt_deg));
   const Eigen::Vector3d axis(std::cos(tilt_azimuth), std::sin(tilt_azimuth), 0.0);
-  return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy);
+  return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy, options.upright_from_model);
 }
 
 Pose LookAtFrom(const Eigen::Vector3d& target_centre, const Eigen::Vector3d& camera_centre,

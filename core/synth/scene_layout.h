@@ -50,14 +50,17 @@ struct SceneLayout {
   double ambient = 0.4;
 };
 
-// Stands `mesh` on the table: rotated by `yaw_rad` about +Z after tilting it by `tilt_rad`
-// about the horizontal `tilt_axis`, resting on its lowest vertex, and shifted so that its
-// sphere centre is above `xy` (world mm).
+// Stands `mesh` on the table: turned upright by `upright_from_model` (its up axis to +Z, see
+// geometry/up_axis.h), tilted by `tilt_rad` about the horizontal `tilt_axis`, rotated by `yaw_rad`
+// about +Z, resting on its lowest vertex, and shifted so that its sphere centre is above `xy`
+// (world mm).
 PlacedItem PlaceUpright(const RenderMesh& mesh, const Sphere& sphere, std::int32_t obj_id,
                         double yaw_rad, const Eigen::Vector3d& tilt_axis, double tilt_rad,
-                        const Eigen::Vector2d& xy);
+                        const Eigen::Vector2d& xy,
+                        const Eigen::Matrix3d& upright_from_model = Eigen::Matrix3d::Identity());
 
-// A random upright pose of `mesh` at `xy` (yaw uniform, tilt up to options.max_tilt_deg).
+// A random upright pose of `mesh` at `xy` (yaw uniform, tilt up to options.max_tilt_deg, the
+// models' up axis options.upright_from_model).
 PlacedItem PlaceRandomUpright(const RenderMesh& mesh, const Sphere& sphere, std::int32_t obj_id,
                               const Eigen::Vector2d& xy, const SynthOptions& options,
                               std::mt19937_64& rng);

@@ -3,6 +3,7 @@
 
 // Options of the synthetic RGB-D scene generator (`layermod synth`).
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -57,7 +58,9 @@ struct SynthOptions {
   // Clutter: 1..clutter other models of models_dir and 1..clutter primitives (0: none).
   int clutter = 3;
   double min_target_visibility = 0.6;     // of the target's silhouette pixels
-  double max_tilt_deg = 3.0;              // objects stand upright (+Z up), give or take this
+  double max_tilt_deg = 3.0;              // objects stand upright, give or take this
+  // The models' up axis (geometry/up_axis.h): they stand with it pointing up. Identity: +Z.
+  Eigen::Matrix3d upright_from_model = Eigen::Matrix3d::Identity();
   int margin_px = 4;                      // the whole target stays this far inside the image
   std::filesystem::path backgrounds_dir;  // photos textured onto the table; empty: procedural
   PinholeCamera camera;

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <utility>
 
+#include "geometry/up_axis.h"
 #include "templates/json_fields.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -71,13 +74,58 @@ int ReadInt(const JsonFields& fields, std::string_view key) {
       fields.Integer(key, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
+// The reference orientation: "up_axis" when it is one of the six axes, else the rotation.
+std::pair<std::string, nlohmann::json> UprightJson(const Eigen::Matrix3d& upright_from_model) {
+  if (const std::optional<std::string> axis = UpAxisName(upright_from_model)) {
+    return {"up_axis", *axis};
+  }
+  nlohmann::json rows = nlohmann::json::array();
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) rows.push_back(upright_from_model(row, col));
+  }
+  return {"upright_from_model", rows};
+}
+
+Eigen::Matrix3d ReadUpright(const JsonFields& fields) {
+  if (fields.Has("up_axis") && fields.Has("upright_from_model")) {
+    fields.Fail("up_axis", "and 'upright_from_model' cannot both be given");
+  }
+  if (fields.Has("up_axis")) {
+    const nlohmann::json& axis = fields.Get("up_axis");
+    if (!axis.is_string()) fields.Fail("up_axis", "must be one of +x, -x, +y, -y, +z, -z");
+    try {
+      return UprightFromUpAxis(axis.get<std::string>());
+    } catch (const Error&) {
+      fields.Fail("up_axis", "must be one of +x, -x, +y, -y, +z, -z");
+    }
+  }
+  if (!fields.Has("upright_from_model")) return Eigen::Matrix3d::Identity();
+  const nlohmann::json& values = fields.Array("upright_from_model");
+  if (values.size() != 9) fields.Fail("upright_from_model", "must hold 9 numbers (row-major)");
+  Eigen::Matrix3d rotation;
+  for (int i = 0; i < 9; ++i) {
+    if (!values[static_cast<std::size_t>(i)].is_number()) {
+      fields.Fail("upright_from_model", "must hold 9 numbers (row-major)");
+    }
+    rotation(i / 3, i % 3) = values[static_cast<std::size_t>(i)].get<double>();
+  }
+  try {
+    ValidateRotation(rotation, "upright_from_model");
+  } catch (const Error&) {
+    fields.Fail("upright_from_model", "is not a rotation (orthonormal rows, determinant +1)");
+  }
+  return rotation;
+}
+
 ViewSamplingOptions ReadViews(const JsonFields& fields) {
-  fields.RejectUnknown({"azimuth", "elevation", "roll", "even_spacing_deg"});
+  fields.RejectUnknown(
+      {"azimuth", "elevation", "roll", "even_spacing_deg", "up_axis", "upright_from_model"});
   ViewSamplingOptions views = TrainingProfile::DefaultEnvelopeViews();
   if (fields.Has("azimuth")) views.azimuth = ReadRange(fields, "azimuth");
   if (fields.Has("elevation")) views.elevation = ReadRange(fields, "elevation");
   if (fields.Has("roll")) views.roll = ReadRange(fields, "roll");
   if (fields.Has("even_spacing_deg")) views.even_spacing_deg = fields.Number("even_spacing_deg");
+  views.upright_from_model = ReadUpright(fields);
   return views;
 }
 
@@ -116,6 +164,23 @@ FeatureOptions ReadFeatures(const JsonFields& fields) {
 
 }  // namespace
 
+const std::vector<std::string>& ViewPresetNames() {
+  static const std::vector<std::string> names = {"tabletop", "full"};
+  return names;
+}
+
+ViewSamplingOptions ViewPreset(std::string_view name, const Eigen::Matrix3d& upright_from_model) {
+  ViewSamplingOptions views = TrainingProfile::DefaultEnvelopeViews();
+  if (name == "full") {
+    views.elevation = {-90.0, 15.0, 90.0};
+    views.roll = {-180.0, 15.0, 165.0};
+  } else if (name != "tabletop") {
+    throw Error("view preset: '" + std::string(name) + "' is not tabletop or full");
+  }
+  views.upright_from_model = upright_from_model;
+  return views;
+}
+
 ViewSamplingOptions TrainingProfile::DefaultEnvelopeViews() {
   ViewSamplingOptions views;
   // The grid values only matter when a user switches even sampling off.
@@ -147,7 +212,8 @@ nlohmann::json ToJson(const TrainingProfile& profile) {
        {{"azimuth", RangeText(profile.views.azimuth)},
         {"elevation", RangeText(profile.views.elevation)},
         {"roll", RangeText(profile.views.roll)},
-        {"even_spacing_deg", profile.views.even_spacing_deg}}},
+        {"even_spacing_deg", profile.views.even_spacing_deg},
+        UprightJson(profile.views.upright_from_model)}},
       {"features",
        {{"color_features", features.color_features},
         {"normal_features", features.normal_features},

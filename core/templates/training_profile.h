@@ -3,6 +3,9 @@
 
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "features/feature_options.h"
 #include "geometry/views.h"
@@ -23,6 +26,14 @@ struct TrainingProfile {
   // in-plane roll -45..45 deg.
   static ViewSamplingOptions DefaultEnvelopeViews();
 };
+
+// Named view envelopes (relative to the model's up axis, which they keep):
+//   "tabletop"  the part stands on its base: DefaultEnvelopeViews();
+//   "full"      any orientation (bin picking): the whole view sphere evenly every 12 deg, roll
+//               all round every 15 deg: 6,864 views per layer against tabletop's 1,001.
+const std::vector<std::string>& ViewPresetNames();
+// Throws Error for an unknown name.
+ViewSamplingOptions ViewPreset(std::string_view name, const Eigen::Matrix3d& upright_from_model);
 
 nlohmann::json ToJson(const TrainingProfile& profile);
 TrainingProfile TrainingProfileFromJson(const nlohmann::json& json);  // throws FormatError

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include "geometry/up_axis.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -187,6 +189,57 @@ TEST(TrainingProfileTest, LoadErrorsNameTheFile) {
               std::string::npos)
         << message;
   }
+}
+
+}  // namespace
+}  // namespace layermod
+
+namespace layermod {
+namespace {
+
+TEST(TrainingProfileUpAxisTest, NamedAxesAndRotationsRoundTrip) {
+  TrainingProfile profile;
+  profile.views.upright_from_model = UprightFromUpAxis("-z");
+  nlohmann::json json = ToJson(profile);
+  EXPECT_EQ(json["views"]["up_axis"], "-z");
+  EXPECT_FALSE(json["views"].contains("upright_from_model"));
+  ExpectSameProfile(TrainingProfileFromJson(json), profile);
+
+  profile.views.upright_from_model =
+      Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  json = ToJson(profile);
+  EXPECT_FALSE(json["views"].contains("up_axis"));
+  EXPECT_EQ(json["views"]["upright_from_model"].size(), 9u);
+  const TrainingProfile back = TrainingProfileFromJson(nlohmann::json::parse(json.dump()));
+  EXPECT_TRUE(back.views.upright_from_model.isApprox(profile.views.upright_from_model, 1e-15));
+  // Profiles and archives written before the up axis existed: +Z.
+  json["views"].erase("upright_from_model");
+  EXPECT_EQ(TrainingProfileFromJson(json).views.upright_from_model, Eigen::Matrix3d::Identity());
+}
+
+TEST(TrainingProfileUpAxisTest, BadOrientationsAreNamed) {
+  ExpectFormatError({{"views", {{"up_axis", "up"}}}}, "'views.up_axis' must be one of");
+  ExpectFormatError({{"views", {{"upright_from_model", {1, 0, 0, 0, 1, 0, 0, 0, -1}}}}},
+                    "'views.upright_from_model' is not a rotation");
+  ExpectFormatError({{"views", {{"upright_from_model", {1, 0, 0}}}}}, "must hold 9 numbers");
+  ExpectFormatError(
+      {{"views", {{"up_axis", "+z"}, {"upright_from_model", {1, 0, 0, 0, 1, 0, 0, 0, 1}}}}},
+      "cannot both be given");
+}
+
+TEST(TrainingProfileUpAxisTest, PresetsKeepTheUpAxis) {
+  const Eigen::Matrix3d up = UprightFromUpAxis("+y");
+  const ViewSamplingOptions tabletop = ViewPreset("tabletop", up);
+  const ViewSamplingOptions full = ViewPreset("full", up);
+  EXPECT_EQ(tabletop.upright_from_model, up);
+  EXPECT_EQ(full.upright_from_model, up);
+  EXPECT_EQ(tabletop.roll, TrainingProfile::DefaultEnvelopeViews().roll);
+  EXPECT_EQ(full.elevation.min_deg, -90.0);
+  EXPECT_EQ(full.roll.Count(), 24u);
+  // Twice the directions (the lower hemisphere too), 24 rolls instead of 7.
+  EXPECT_EQ(CountViews(tabletop), 1001u);
+  EXPECT_EQ(CountViews(full), 6864u);
+  EXPECT_THROW(ViewPreset("sideways", up), Error);
 }
 
 }  // namespace
