@@ -15,7 +15,7 @@
 namespace layermod::api {
 namespace {
 
-TEST(ArchiveTest, LoadGivesWhatTrainingMade) {
+TEST(ApiArchiveTest, LoadGivesWhatTrainingMade) {
   const test::ApiSample& sample = test::Sample();
   const Archive loaded = Archive::Load(sample.archive_path);
   EXPECT_EQ(loaded.template_count(), sample.archive.template_count());
@@ -30,18 +30,18 @@ TEST(ArchiveTest, LoadGivesWhatTrainingMade) {
   EXPECT_EQ(loaded.InfoJson(), sample.archive.InfoJson());
 }
 
-TEST(ArchiveTest, SaveThenLoadKeepsTheInfo) {
+TEST(ApiArchiveTest, SaveThenLoadKeepsTheInfo) {
   test::TempDir dir;
   test::Sample().archive.Save(dir / "copy.layermod");
   EXPECT_EQ(Archive::Load(dir / "copy.layermod").InfoJson(), test::Sample().archive.InfoJson());
 }
 
-TEST(ArchiveTest, CopiesShareOneArchive) {
+TEST(ApiArchiveTest, CopiesShareOneArchive) {
   const Archive copy = test::Sample().archive;  // a handle: no template is copied
   EXPECT_EQ(copy.template_count(), test::Sample().archive.template_count());
 }
 
-TEST(ArchiveTest, MissingAndDamagedFilesThrowNamingTheFile) {
+TEST(ApiArchiveTest, MissingAndDamagedFilesThrowNamingTheFile) {
   test::TempDir dir;
   try {
     Archive::Load(dir / "missing.layermod");
@@ -55,7 +55,7 @@ TEST(ArchiveTest, MissingAndDamagedFilesThrowNamingTheFile) {
   EXPECT_THROW(Archive::Load(dir / "cut.layermod"), FormatError);
 }
 
-TEST(VersionTest, NamesTheLibraryAndTheFormat) {
+TEST(ApiVersionTest, NamesTheLibraryAndTheFormat) {
   EXPECT_FALSE(Version().empty());
   const auto info = nlohmann::json::parse(test::Sample().archive.InfoJson());
   EXPECT_EQ(info["format_version"].get<int>(), ArchiveFormatVersion());

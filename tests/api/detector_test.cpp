@@ -25,7 +25,7 @@ std::string DetectError(const Detector& detector, const Capture& capture) {
   return "";
 }
 
-TEST(DetectorTest, FindsThePartNearItsTruePose) {
+TEST(ApiDetectorTest, FindsThePartNearItsTruePose) {
   const Detector detector({Sample().archive});
   for (const test::SampleFrame& frame : Sample().frames) {
     const DetectionResult result = detector.Detect(frame.capture);
@@ -42,7 +42,7 @@ TEST(DetectorTest, FindsThePartNearItsTruePose) {
 
 // Detect is const and only reads the detector: two threads on one detector give exactly the
 // results one thread gives.
-TEST(DetectorTest, OneDetectorServesTwoThreads) {
+TEST(ApiDetectorTest, OneDetectorServesTwoThreads) {
   const Detector detector({Sample().archive});
   std::vector<Eigen::Vector3d> alone;
   for (const test::SampleFrame& frame : Sample().frames) {
@@ -68,7 +68,7 @@ TEST(DetectorTest, OneDetectorServesTwoThreads) {
   }
 }
 
-TEST(DetectorTest, SixteenBitDepthEqualsFloatDepth) {
+TEST(ApiDetectorTest, SixteenBitDepthEqualsFloatDepth) {
   const Detector detector({Sample().archive});
   Capture as_float = Sample().frames[1].capture;
   Capture as_u16 = as_float;
@@ -81,7 +81,7 @@ TEST(DetectorTest, SixteenBitDepthEqualsFloatDepth) {
   EXPECT_LT((a.detections[0].t_mm - b.detections[0].t_mm).norm(), 1e-6);
 }
 
-TEST(DetectorTest, NanAndNegativeDepthCountAsNoMeasurement) {
+TEST(ApiDetectorTest, NanAndNegativeDepthCountAsNoMeasurement) {
   const Detector detector({Sample().archive});
   Capture capture = Sample().frames[0].capture;
   capture.depth = capture.depth.clone();
@@ -93,7 +93,7 @@ TEST(DetectorTest, NanAndNegativeDepthCountAsNoMeasurement) {
   EXPECT_LT((result.detections[0].t_mm - Sample().frames[0].true_t_mm).norm(), 15.0);
 }
 
-TEST(DetectorTest, OptionsUseTheCliNames) {
+TEST(ApiDetectorTest, OptionsUseTheCliNames) {
   const Detector detector({Sample().archive}, R"({"threshold": 99.5, "instances": 2})");
   const auto options = nlohmann::json::parse(detector.OptionsJson());
   EXPECT_EQ(options["threshold"], 99.5);
@@ -109,7 +109,7 @@ TEST(DetectorTest, OptionsUseTheCliNames) {
   EXPECT_THROW(Detector({Sample().archive, Sample().archive}), Error);  // id 1 twice
 }
 
-TEST(DetectorTest, UnusableCapturesThrowNamingTheProblem) {
+TEST(ApiDetectorTest, UnusableCapturesThrowNamingTheProblem) {
   const Detector detector({Sample().archive});
   const Capture good = Sample().frames[0].capture;
   Capture capture = good;
@@ -133,7 +133,7 @@ TEST(DetectorTest, UnusableCapturesThrowNamingTheProblem) {
   EXPECT_NE(DetectError(detector, capture).find("depth_scale"), std::string::npos);
 }
 
-TEST(DetectorTest, JsonIsTheCliFormat) {
+TEST(ApiDetectorTest, JsonIsTheCliFormat) {
   const Detector detector({Sample().archive});
   const DetectionResult result = detector.Detect(Sample().frames[0].capture);
   ASSERT_FALSE(result.detections.empty());

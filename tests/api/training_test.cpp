@@ -20,7 +20,7 @@ TrainOptions Tiny() {
   return options;
 }
 
-TEST(TrainingTest, ReportsProgressUpToEveryTemplate) {
+TEST(ApiTrainingTest, ReportsProgressUpToEveryTemplate) {
   std::size_t last_done = 0;
   std::size_t last_total = 0;
   const Archive archive = Train(Tiny(), [&](std::size_t done, std::size_t total, std::string_view) {
@@ -33,7 +33,7 @@ TEST(TrainingTest, ReportsProgressUpToEveryTemplate) {
   EXPECT_EQ(archive.objects().at(0).name, "bracket");  // from the mesh file's name
 }
 
-TEST(TrainingTest, CancelFlagStopsAndWritesNothing) {
+TEST(ApiTrainingTest, CancelFlagStopsAndWritesNothing) {
   test::TempDir dir;
   TrainOptions options = Tiny();
   options.out = dir / "never.layermod";
@@ -48,7 +48,7 @@ TEST(TrainingTest, CancelFlagStopsAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(options.out));
 }
 
-TEST(TrainingTest, BadInputThrowsNamingIt) {
+TEST(ApiTrainingTest, BadInputThrowsNamingIt) {
   TrainOptions options = Tiny();
   options.profile_json = R"({"depth_min_mm": -5})";
   EXPECT_THROW(Train(options), FormatError);
