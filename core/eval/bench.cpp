@@ -95,7 +95,8 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
     methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kColorOnly),
                LinemodMethod(linemod, "cv::linemod LINE-2D")};
   }
-  for (const MethodRun& run : RunMethods(plan.dataset, plan.frames, methods, metrics, job)) {
+  for (MethodRun& run : RunMethods(plan.dataset, plan.frames, methods, metrics, job)) {
+    MarkEnvelopeCoverage(detector, plan, run);
     result.methods.push_back(Summarize(run, plan.dataset.models));
   }
   return result;

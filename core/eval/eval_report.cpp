@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "eval/eval_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -35,6 +36,7 @@ nlohmann::json ObjectJson(const ObjectSummary& object) {
           {"correct", object.correct},
           {"proj2d_correct", object.proj2d_correct},
           {"box_correct", object.box_correct},
+          {"outside_envelope", object.outside_envelope},
           {"accuracy_percent", object.AccuracyPercent()},
           {"proj2d_percent", object.Proj2DPercent()},
           {"detection_rate_percent", object.DetectionRatePercent()},
@@ -101,6 +103,7 @@ nlohmann::json OutcomesJson(const MethodRun& run) {
                             {"obj_id", outcome.obj_id},
                             {"detected", outcome.detected},
                             {"time_ms", outcome.frame_time_ms}};
+    if (outcome.outside_envelope) entry["outside_envelope"] = outcome.envelope_note;
     if (outcome.detected) {
       entry["score"] = outcome.score;
       entry["error_mm"] = FiniteOrNull(outcome.pose.error_mm);
@@ -136,7 +139,24 @@ std::string SummaryTable(const MethodSummary& summary) {
   return table;
 }
 
-std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary) {
+std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& run) {
+  std::string text;
+  for (const ObjectSummary& object : summary.objects) {
+    if (object.outside_envelope == 0) continue;
+    const auto first = std::find_if(run.outcomes.begin(), run.outcomes.end(), [&](const auto& o) {
+      return o.obj_id == object.obj_id && o.outside_envelope;
+    });
+    text += "obj " + std::to_string(object.obj_id) + ": " +
+            std::to_string(object.outside_envelope) + " of " + std::to_string(object.frames) +
+            " targets outside the archive's envelope, no template could match them (first: scene " +
+            std::to_string(first->scene_id) + " image " + std::to_string(first->image_id) + ", " +
+            first->envelope_note + ")\n";
+  }
+  return text;
+}
+
+std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary,
+                               const MethodRun& run) {
   std::string archives;
   for (const std::string& archive : info.archives)
     archives += (archives.empty() ? "" : ", ") + archive;
@@ -158,6 +178,8 @@ std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& sum
           " %. Time per frame: mean " + Fixed(summary.mean_frame_ms, 1) + " ms, median " +
           Fixed(summary.median_frame_ms, 1) + " ms, p90 " + Fixed(summary.p90_frame_ms, 1) +
           " ms.\n";
+  const std::string coverage = EnvelopeCoverageText(summary, run);
+  if (!coverage.empty()) text += "\n" + coverage;
   return text;
 }
 
@@ -176,7 +198,7 @@ void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& in
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw IoError(Quoted(out_dir) + ": cannot create the folder (" + ec.message() + ")");
   WriteFileAtomically(out_dir / "report.json", EvalReportJson(info, summary, run).dump(2) + "\n");
-  WriteFileAtomically(out_dir / "report.md", EvalReportMarkdown(info, summary));
+  WriteFileAtomically(out_dir / "report.md", EvalReportMarkdown(info, summary, run));
 }
 
 }  // namespace layermod

@@ -40,7 +40,12 @@ nlohmann::json EvalReportJson(const EvalRunInfo& info, const MethodSummary& summ
 
 // A Markdown table, one row per object plus "all" (the paper's Table 4 with more columns).
 std::string SummaryTable(const MethodSummary& summary);
-std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary);
+std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary,
+                               const MethodRun& run);
+
+// One line per object with targets outside the archive's envelope ("" when none): such misses
+// are a training question, not a detection failure.
+std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& run);
 
 // Throws IoError unless `out_dir` is a writable folder or can be created as one (its parent is a
 // writable folder): lets a run fail before the work rather than after it.

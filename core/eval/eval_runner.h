@@ -41,6 +41,10 @@ struct TargetOutcome {
   float score = 0.0f;     // of that detection
   PoseScore pose;         // against the closest annotated instance; meaningful when detected
   double frame_time_ms = 0.0;
+  // No annotated instance of the target lies inside the archive's view envelope
+  // (eval/envelope_coverage.h): no template could match it.
+  bool outside_envelope = false;
+  std::string envelope_note;  // why, for the first instance
 };
 
 struct MethodRun {

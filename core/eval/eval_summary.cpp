@@ -24,6 +24,7 @@ ObjectSummary SummarizeOutcomes(const std::vector<const TargetOutcome*>& outcome
     summary.correct += outcome->pose.correct ? 1 : 0;
     summary.proj2d_correct += outcome->pose.proj2d_correct ? 1 : 0;
     summary.box_correct += outcome->pose.box_correct ? 1 : 0;
+    summary.outside_envelope += outcome->outside_envelope ? 1 : 0;
   }
   summary.mean_time_ms = Mean(times_ms);
   summary.median_time_ms = Quantile(times_ms, 0.5);

@@ -19,9 +19,10 @@ struct ObjectSummary {
   double diameter_mm = 0.0;
   int frames = 0;  // targets judged
   int detected = 0;
-  int correct = 0;         // ADD(-S) <= km * d
-  int proj2d_correct = 0;  // Proj2D <= threshold
-  int box_correct = 0;     // projected box IoU >= threshold: counts as a 2D detection
+  int correct = 0;           // ADD(-S) <= km * d
+  int proj2d_correct = 0;    // Proj2D <= threshold
+  int box_correct = 0;       // projected box IoU >= threshold: counts as a 2D detection
+  int outside_envelope = 0;  // targets no template of the archive covers
   double mean_time_ms = 0.0;
   double median_time_ms = 0.0;
 

@@ -2,9 +2,12 @@
 #include "eval/evaluation.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <string>
+#include <tuple>
 
+#include "eval/envelope_coverage.h"
 #include "util/error.h"
 #include "util/quoted.h"
 
@@ -50,6 +53,38 @@ EvalPlan PlanEvaluation(const std::filesystem::path& dataset_dir,
   return plan;
 }
 
+void MarkEnvelopeCoverage(const Detector& detector, const EvalPlan& plan, MethodRun& run) {
+  std::map<std::int32_t, ViewEnvelope> envelopes;
+  for (std::size_t a = 0; a < detector.archive_count(); ++a) {
+    for (const ArchiveObject& object : detector.archive(a).manifest().objects) {
+      envelopes.emplace(object.obj_id, ViewEnvelope(detector.archive(a), object.obj_id));
+    }
+  }
+  std::map<std::tuple<int, int, std::int32_t>, std::string> outside;  // scene, image, object
+  for (const EvalFrame& frame : plan.frames) {
+    const BopFrameAnnotations& annotations =
+        plan.dataset.scenes[frame.scene_index].annotations.at(frame.image_id);
+    for (const EvalTarget& target : frame.targets) {
+      std::string note;
+      bool covered = false;
+      for (int index : target.gt_indices) {
+        const EnvelopeCheck check =
+            envelopes.at(target.obj_id)
+                .Check(annotations.gt.at(static_cast<std::size_t>(index)).cam_from_model);
+        covered = covered || check.inside;
+        if (note.empty()) note = check.reason;
+      }
+      if (!covered) outside[{frame.scene_id, frame.image_id, target.obj_id}] = note;
+    }
+  }
+  for (TargetOutcome& outcome : run.outcomes) {
+    const auto it = outside.find({outcome.scene_id, outcome.image_id, outcome.obj_id});
+    if (it == outside.end()) continue;
+    outcome.outside_envelope = true;
+    outcome.envelope_note = it->second;
+  }
+}
+
 EvalMethod DetectorMethod(const Detector& detector, const DetectorOptions& options) {
   return {std::string(ModeName(options.mode)), [&detector, options](const BopFrame& frame) {
             return detector.Detect(Capture{frame.color, frame.depth_mm, frame.camera}, options)
@@ -78,6 +113,7 @@ Evaluation Evaluate(const Detector& detector, const DetectorOptions& options,
       RunMethods(plan.dataset, plan.frames, {DetectorMethod(detector, options)}, metrics, job);
   Evaluation evaluation;
   evaluation.run = std::move(runs.front());
+  MarkEnvelopeCoverage(detector, plan, evaluation.run);
   evaluation.summary = Summarize(evaluation.run, plan.dataset.models);
   return evaluation;
 }

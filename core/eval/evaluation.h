@@ -34,6 +34,10 @@ bool ModeNeedsDepth(DetectionMode mode);
 // The detector as a method: Detect() on the frame's colour, depth and camera.
 EvalMethod DetectorMethod(const Detector& detector, const DetectorOptions& options);
 
+// Marks the outcomes whose target no template of the detector's archives covers (every annotated
+// instance outside its object's ViewEnvelope), with the reason of the first.
+void MarkEnvelopeCoverage(const Detector& detector, const EvalPlan& plan, MethodRun& run);
+
 // The object ids of the detector's archives, ascending.
 std::vector<std::int32_t> DetectorObjectIds(const Detector& detector);
 

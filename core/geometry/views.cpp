@@ -24,12 +24,6 @@ double ParseDouble(std::string_view text, std::string_view name) {
   return value;
 }
 
-Eigen::Vector3d DirectionFromAngles(double azimuth_deg, double elevation_deg) {
-  const double az = DegToRad(azimuth_deg);
-  const double el = DegToRad(elevation_deg);
-  return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
-}
-
 // Fibonacci lattice on the whole sphere with about `spacing_deg` between neighbours; keeps the
 // directions whose elevation lies in `elevation`.
 int FibonacciPointCount(double spacing_deg) {
@@ -68,6 +62,12 @@ std::size_t CountEvenDirections(double spacing_deg, const AngleRange& elevation)
 }
 
 }  // namespace
+
+Eigen::Vector3d DirectionFromAngles(double azimuth_deg, double elevation_deg) {
+  const double az = DegToRad(azimuth_deg);
+  const double el = DegToRad(elevation_deg);
+  return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+}
 
 void AngleRange::Validate(std::string_view name) const {
   if (!std::isfinite(min_deg) || !std::isfinite(step_deg) || !std::isfinite(max_deg)) {

@@ -34,6 +34,9 @@ struct ViewAngles {
   double roll_deg = 0.0;
 };
 
+// Unit vector from the sphere centre towards the camera of a view (upright frame).
+Eigen::Vector3d DirectionFromAngles(double azimuth_deg, double elevation_deg);
+
 struct ViewSamplingOptions {
   AngleRange azimuth{0.0, 15.0, 345.0};
   AngleRange elevation{0.0, 15.0, 75.0};

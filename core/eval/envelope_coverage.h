@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// Whether an archive's view envelope covers a pose: a miss that no template could match is a
+// training question (widen the envelope, set the up axis), not a detection failure.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/pose.h"
+#include "templates/archive.h"
+
+namespace layermod {
+
+struct EnvelopeCheck {
+  bool inside = true;
+  double view_gap_deg = 0.0;  // from the pose's view direction to the nearest template view
+  double roll_deg = 0.0;      // the pose's in-plane rotation, as the templates' roll measures it
+  double depth_mm = 0.0;      // camera to sphere centre along the optical axis
+  std::string reason;         // why it is outside; empty inside
+};
+
+// One object's envelope as its templates sample it: view directions (in the upright frame of
+// its training profile), the roll range and the depth layers. A pose is outside when it is more
+// than one sampling step beyond all of them: its view direction farther than the typical
+// spacing of neighbouring template views from every one, its roll outside the trained rolls by
+// more than a roll step, or its depth beyond the first/last layer by more than a layer spacing.
+class ViewEnvelope {
+ public:
+  // Throws Error when the archive has no templates of `obj_id`.
+  ViewEnvelope(const TemplateArchive& archive, std::int32_t obj_id);
+
+  EnvelopeCheck Check(const Pose& cam_from_model) const;
+
+  double view_step_deg() const { return view_step_deg_; }
+
+ private:
+  Eigen::Matrix3d upright_from_model_;
+  Eigen::Vector3d centre_in_model_;
+  std::vector<Eigen::Vector3d> directions_;  // distinct template view directions
+  double view_step_deg_ = 0.0;               // median angle to the nearest other direction
+  double roll_min_deg_ = 0.0;
+  double roll_max_deg_ = 0.0;
+  double roll_step_deg_ = 0.0;
+  bool full_roll_ = false;
+  double depth_min_mm_ = 0.0;  // first and last layer
+  double depth_max_mm_ = 0.0;
+  double layer_spacing_mm_ = 0.0;
+};
+
+}  // namespace layermod
