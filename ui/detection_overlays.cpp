@@ -73,7 +73,7 @@ cv::Mat ComposeDetectionOverlays(const Capture& capture, const DetectionResult& 
   const cv::Mat& color = capture.color;
   if (color.empty() || detector.archives().empty()) return color.clone();
   // The stage pictures dim the image the same way; an empty match list gives just that.
-  const cv::Mat dimmed = DrawMatches(color, ObjectDiagnostics{}, detector.archives().front());
+  const cv::Mat dimmed = DrawMatches(color, ObjectDiagnostics{}, *detector.archives().front());
   cv::Mat canvas = toggles.any_stage() ? dimmed.clone() : color.clone();
   for (const ObjectDiagnostics& diagnostics : result.diagnostics) {
     const bool has_division = !diagnostics.division.blocks.empty();

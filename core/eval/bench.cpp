@@ -77,8 +77,8 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
       PlanEvaluation(dataset_dir, DetectorObjectIds(detector), selection, with_depth);
   BenchResult result;
   result.suite = suite;
-  for (const TemplateArchive& archive : detector.archives()) {
-    result.templates += archive.templates().size();
+  for (const TemplateArchive* archive : detector.archives()) {
+    result.templates += archive->templates().size();
   }
   OpenCvLinemodOptions linemod_options;
   linemod_options.threshold_percent = detector_options.match.threshold_percent;

@@ -94,8 +94,8 @@ EvalMethod DetectorMethod(const Detector& detector, const DetectorOptions& optio
 
 std::vector<std::int32_t> DetectorObjectIds(const Detector& detector) {
   std::vector<std::int32_t> ids;
-  for (const TemplateArchive& archive : detector.archives()) {
-    for (const ArchiveObject& object : archive.manifest().objects) ids.push_back(object.obj_id);
+  for (const TemplateArchive* archive : detector.archives()) {
+    for (const ArchiveObject& object : archive->manifest().objects) ids.push_back(object.obj_id);
   }
   std::sort(ids.begin(), ids.end());
   return ids;

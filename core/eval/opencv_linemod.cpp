@@ -55,11 +55,11 @@ std::unique_ptr<cv::linemod::Detector> MakeDetector(const FeatureOptions& featur
   return std::make_unique<cv::linemod::Detector>(modalities, features.spread_px);
 }
 
-const FeatureOptions& SharedFeatures(const std::vector<TemplateArchive>& archives) {
-  if (archives.empty() || archives.front().manifest().objects.empty()) {
+const FeatureOptions& SharedFeatures(const std::vector<const TemplateArchive*>& archives) {
+  if (archives.empty() || archives.front()->manifest().objects.empty()) {
     throw Error("cv::linemod baseline: no archive object to train");
   }
-  return archives.front().manifest().objects.front().profile.features;
+  return archives.front()->manifest().objects.front().profile.features;
 }
 
 }  // namespace
@@ -70,20 +70,20 @@ void OpenCvLinemodOptions::Validate() const {
   }
 }
 
-OpenCvLinemod::OpenCvLinemod(const std::vector<TemplateArchive>& archives,
+OpenCvLinemod::OpenCvLinemod(const std::vector<const TemplateArchive*>& archives,
                              const OpenCvLinemodOptions& options, const JobControl& job)
     : options_(options) {
   options_.Validate();
   spread_px_ = SharedFeatures(archives).spread_px;
   detector_ = MakeDetector(SharedFeatures(archives), options_.use_depth);
   std::size_t total = 0;
-  for (const TemplateArchive& archive : archives) total += archive.templates().size();
+  for (const TemplateArchive* archive : archives) total += archive->templates().size();
   const auto start = std::chrono::steady_clock::now();
   std::size_t done = 0;
-  for (const TemplateArchive& archive : archives) {
-    for (std::size_t record = 0; record < archive.templates().size(); ++record) {
+  for (const TemplateArchive* archive : archives) {
+    for (std::size_t record = 0; record < archive->templates().size(); ++record) {
       job.ThrowIfCancelled();
-      AddTemplate(archive, record);
+      AddTemplate(*archive, record);
       job.Report(++done, total, "cv::linemod templates");
     }
   }

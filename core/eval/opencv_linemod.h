@@ -42,8 +42,8 @@ class OpenCvLinemod {
  public:
   // Keeps a reference to `archives` (they must outlive this object). Reports progress per
   // template; throws Cancelled when `job` is cancelled.
-  OpenCvLinemod(const std::vector<TemplateArchive>& archives, const OpenCvLinemodOptions& options,
-                const JobControl& job = {});
+  OpenCvLinemod(const std::vector<const TemplateArchive*>& archives,
+                const OpenCvLinemodOptions& options, const JobControl& job = {});
   ~OpenCvLinemod();
   OpenCvLinemod(const OpenCvLinemod&) = delete;
   OpenCvLinemod& operator=(const OpenCvLinemod&) = delete;

@@ -193,11 +193,10 @@ Detector::Detector(std::vector<std::shared_ptr<const TemplateArchive>> archives)
   IndexObjects();
 }
 
-const std::vector<TemplateArchive>& Detector::archives() const {
-  if (owned_ == nullptr) {
-    throw Error("detector: built from shared archives; use archive_count() and archive(i)");
-  }
-  return *owned_;
+std::vector<const TemplateArchive*> Detector::archives() const {
+  std::vector<const TemplateArchive*> archives;
+  for (const auto& archive : archives_) archives.push_back(archive.get());
+  return archives;
 }
 
 void Detector::IndexObjects() {

@@ -99,9 +99,8 @@ class Detector {
   // intrinsics other than the archives', depth required by the mode but absent.
   DetectionResult Detect(const Capture& capture, const DetectorOptions& options) const;
 
-  // The archives given by value. Throws Error for a detector built from shared archives: use
-  // archive_count() and archive(i), which serve both.
-  const std::vector<TemplateArchive>& archives() const;
+  // The archives, in the order given (owned or shared, however the detector was built).
+  std::vector<const TemplateArchive*> archives() const;
   std::size_t archive_count() const { return archives_.size(); }
   const TemplateArchive& archive(std::size_t index) const { return *archives_.at(index); }
   const PinholeCamera& camera() const { return archives_.front()->camera(); }
@@ -119,7 +118,7 @@ class Detector {
 
   void IndexObjects();  // fills objects_ from archives_; throws Error for inconsistent archives
 
-  std::shared_ptr<const std::vector<TemplateArchive>> owned_;  // by-value construction only
+  std::shared_ptr<const std::vector<TemplateArchive>> owned_;     // by-value construction only
   std::vector<std::shared_ptr<const TemplateArchive>> archives_;  // into owned_ or shared
   std::vector<ObjectEntry> objects_;
 };

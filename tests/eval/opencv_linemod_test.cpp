@@ -38,7 +38,7 @@ test::TinyEvalData* OpenCvLinemodTest::data_ = nullptr;
 std::vector<TemplateArchive>* OpenCvLinemodTest::archives_ = nullptr;
 
 TEST_F(OpenCvLinemodTest, TakesOrRefusesEveryArchiveTemplate) {
-  const OpenCvLinemod linemod(*archives_, {});
+  const OpenCvLinemod linemod({&archives_->front()}, {});
   EXPECT_EQ(static_cast<std::size_t>(linemod.training().templates + linemod.training().refused),
             data_->archive.templates().size());
   EXPECT_EQ(linemod.training().template_ids.size(),
@@ -53,7 +53,7 @@ TEST(OpenCvLinemodSingleLayerTest, FindsATemplateRenderAtItsOwnPoseAndBox) {
   const std::vector<TemplateArchive> archives = {test::TrainBracketArchive(900.0, 910.0)};
   const TemplateArchive& archive = archives.front();
   ASSERT_EQ(archive.Object(1).layer_depths_mm.size(), 1u);
-  const OpenCvLinemod linemod(archives, {});
+  const OpenCvLinemod linemod({&archive}, {});
   const std::vector<std::uint32_t>& taken = linemod.training().template_ids;
   ASSERT_GE(taken.size(), 2u);
   for (const std::uint32_t id : {taken.front(), taken[taken.size() / 2]}) {
@@ -76,11 +76,11 @@ TEST(OpenCvLinemodSingleLayerTest, FindsATemplateRenderAtItsOwnPoseAndBox) {
 TEST_F(OpenCvLinemodTest, ColourOnlyNeedsNoDepthAndDepthModeDoes) {
   OpenCvLinemodOptions line2d;
   line2d.use_depth = false;
-  const OpenCvLinemod colour_only(*archives_, line2d);
+  const OpenCvLinemod colour_only({&archives_->front()}, line2d);
   const PinholeCamera& camera = data_->archive.camera();
   const cv::Mat black(camera.height, camera.width, CV_8UC3, cv::Scalar::all(0));
   EXPECT_TRUE(colour_only.Detect(black, {}).empty());
-  const OpenCvLinemod with_depth(*archives_, {});
+  const OpenCvLinemod with_depth({&archives_->front()}, {});
   EXPECT_THROW(with_depth.Detect(black, {}), Error);
 }
 
