@@ -29,6 +29,15 @@ void PrintText(const nlohmann::json& json) {
     std::printf("  radius %.2f mm, diameter %.2f mm, %zu templates\n",
                 object["radius_mm"].get<double>(), object["diameter_mm"].get<double>(),
                 object["templates"].get<std::size_t>());
+    const auto& views = object["views"];
+    const std::string up = views.contains("up_axis") ? views["up_axis"].get<std::string>()
+                                                     : std::string("custom rotation");
+    const std::string sampling = views["even_spacing_deg"].get<double>() > 0.0
+                                     ? "even every " + views["even_spacing_deg"].dump() + " deg"
+                                     : "azimuth " + views["azimuth"].get<std::string>();
+    std::printf("  views: up axis %s, elevation %s, roll %s, %s\n", up.c_str(),
+                views["elevation"].get<std::string>().c_str(),
+                views["roll"].get<std::string>().c_str(), sampling.c_str());
     std::printf("  %5s %9s %9s %5s %18s %18s %18s\n", "layer", "depth_mm", "templates", "weak",
                 "colour min/avg/max", "normal min/avg/max", "edges min/avg/max");
     for (const auto& layer : object["layers"]) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "api/archive_info.h"
+#include "templates/training_profile.h"
 
 #include <algorithm>
 #include <span>
@@ -62,6 +63,7 @@ nlohmann::json ObjectJson(const TemplateArchive& archive, const ArchiveObject& o
                           {"radius_mm", object.sphere.radius},
                           {"diameter_mm", object.diameter_mm}};
   entry["templates"] = archive.TemplatesOf(object.obj_id).size();
+  entry["views"] = ToJson(object.profile)["views"];  // the envelope and the up axis
   for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
     const LayerStats stats = ComputeLayerStats(
         archive.TemplatesOf(object.obj_id, static_cast<int>(layer)), object.layer_depths_mm[layer]);
