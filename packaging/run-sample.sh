@@ -20,5 +20,14 @@ rm -rf out/sample/scenes
 ./build/app/layermod detect --archive out/sample/bracket.layermod --bop out/sample/scenes/test \
   --scene 1 --frame 0 --json out/sample/detection.json --overlay out/sample/detection.png \
   --overlay-stages out/sample/stages
+# The Python module of this build, importable by Debian's python3 from now on (a .pth file in
+# the user's site-packages, as an editable install would do), then the Python example on the
+# same scene.
+site_dir="$(/usr/bin/python3 -c 'import site; print(site.getusersitepackages())')"
+mkdir -p "$site_dir"
+echo "$PWD/build/python" > "$site_dir/layermod-build.pth"
+/usr/bin/python3 examples/python/detect_folder.py out/sample/scenes/test/000001 \
+  out/sample/bracket.layermod
 echo "sample done: out/sample/bracket.layermod, template renders in out/sample/templates,"
-echo "detection in out/sample/detection.{json,png} and out/sample/stages"
+echo "detection in out/sample/detection.{json,png} and out/sample/stages;"
+echo "python3 -c 'import layermod' uses this build ($site_dir/layermod-build.pth)"
