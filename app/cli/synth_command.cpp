@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "geometry/up_axis.h"
 #include "cli/progress_job.h"
 #include "geometry/camera.h"
+#include "geometry/up_axis.h"
 #include "synth/synthesizer.h"
 #include "util/error.h"
 

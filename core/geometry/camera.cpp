@@ -14,10 +14,12 @@ namespace {
 
 double ReadNumber(const nlohmann::json& json, const char* key, const std::filesystem::path& path) {
   if (!json.contains(key)) {
-    throw FormatError(Quoted(path) + ": camera field " + Quoted(std::string_view(key)) + " is missing");
+    throw FormatError(Quoted(path) + ": camera field " + Quoted(std::string_view(key)) +
+                      " is missing");
   }
   if (!json[key].is_number()) {
-    throw FormatError(Quoted(path) + ": camera field " + Quoted(std::string_view(key)) + " is not a number");
+    throw FormatError(Quoted(path) + ": camera field " + Quoted(std::string_view(key)) +
+                      " is not a number");
   }
   return json[key].get<double>();
 }
@@ -25,7 +27,8 @@ double ReadNumber(const nlohmann::json& json, const char* key, const std::filesy
 }  // namespace
 
 void PinholeCamera::Validate() const {
-  const bool finite = std::isfinite(fx) && std::isfinite(fy) && std::isfinite(cx) && std::isfinite(cy);
+  const bool finite =
+      std::isfinite(fx) && std::isfinite(fy) && std::isfinite(cx) && std::isfinite(cy);
   if (!finite) throw Error("camera: intrinsics must be finite numbers");
   if (fx <= 0.0 || fy <= 0.0) throw Error("camera: focal lengths fx, fy must be positive");
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {

@@ -20,9 +20,10 @@ double RankingScore(const Detection& detection, bool has_depth);
 bool RanksHigher(const Detection& a, const Detection& b);
 
 // Turns an object's raw matches (best first) into verified detections: initial pose from the
-// template, ICP against the depth (when present), verification; ranked best first by RankingScore; duplicates of one instance
-// (centres closer than the sphere radius) collapse to the best. At most `options.max_instances`.
-// ICP and verification render `pose_mesh`: the object's mesh, or a coarser copy of it.
+// template, ICP against the depth (when present), verification; ranked best first by RankingScore;
+// duplicates of one instance (centres closer than the sphere radius) collapse to the best. At most
+// `options.max_instances`. ICP and verification render `pose_mesh`: the object's mesh, or a coarser
+// copy of it.
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,
                                         const RenderMesh& pose_mesh, const Capture& capture,

@@ -13,9 +13,6 @@
 namespace layermod {
 namespace {
 
-template <typename T>
-constexpr bool kIsNumber = std::is_arithmetic_v<T>;
-
 std::string Describe(std::string_view what, const DetectorOptionField& field) {
   return std::string(what) + " field '" + std::string(field.key) + "'";
 }

@@ -25,9 +25,10 @@ void DrawLabel(cv::Mat& canvas, const std::string& text, cv::Point origin, cv::S
 
 cv::Mat BlockPixelMask(const RegionDivision& division, const SceneBlock& block) {
   cv::Mat mask;
-  cv::resize(block.cells, mask,
-             cv::Size(block.cells.cols * division.cell_size_px, block.cells.rows * division.cell_size_px),
-             0, 0, cv::INTER_NEAREST);
+  cv::resize(
+      block.cells, mask,
+      cv::Size(block.cells.cols * division.cell_size_px, block.cells.rows * division.cell_size_px),
+      0, 0, cv::INTER_NEAREST);
   return mask(cv::Rect(cv::Point(0, 0), division.image_size));
 }
 
@@ -71,10 +72,11 @@ cv::Mat DrawRegionDivision(const cv::Mat& color, const ObjectDiagnostics& diagno
   }
   for (int i = 0; i < layers; ++i) {
     const cv::Point corner(8, 16 + 18 * i);
-    cv::rectangle(canvas, corner + cv::Point(0, -10), corner + cv::Point(12, 2), LayerColor(i, layers),
-                  cv::FILLED);
+    cv::rectangle(canvas, corner + cv::Point(0, -10), corner + cv::Point(12, 2),
+                  LayerColor(i, layers), cv::FILLED);
     char text[48];
-    std::snprintf(text, sizeof(text), "layer %d: %.0f mm", i, object.layer_depths_mm[static_cast<std::size_t>(i)]);
+    std::snprintf(text, sizeof(text), "layer %d: %.0f mm", i,
+                  object.layer_depths_mm[static_cast<std::size_t>(i)]);
     DrawLabel(canvas, text, corner + cv::Point(18, 0), cv::Scalar(255, 255, 255));
   }
   return canvas;
@@ -114,7 +116,8 @@ cv::Mat DrawMatches(const cv::Mat& color, const ObjectDiagnostics& diagnostics,
     for (const Feature& feature : tmpl.levels.at(0).features) {
       const cv::Scalar dot = feature.modality == Modality::kColorGradient ? cv::Scalar(0, 255, 0)
                                                                           : cv::Scalar(255, 80, 80);
-      if (drawn == 0) cv::circle(canvas, box.tl() + cv::Point(feature.x, feature.y), 1, dot, cv::FILLED);
+      if (drawn == 0)
+        cv::circle(canvas, box.tl() + cv::Point(feature.x, feature.y), 1, dot, cv::FILLED);
     }
     char text[48];
     std::snprintf(text, sizeof(text), "#%u %.1f%%", match.template_id, match.similarity_percent);
@@ -136,10 +139,12 @@ cv::Mat DrawPoses(const cv::Mat& color, const std::vector<Detection>& detections
                        view.roi.tl());
       cv::drawContours(canvas, contours, -1, cv::Scalar(0, 255, 0), 2, cv::LINE_AA);
     }
-    DrawAxes(canvas, detection.cam_from_model, object.sphere.centre, object.sphere.radius * 0.8, camera);
+    DrawAxes(canvas, detection.cam_from_model, object.sphere.centre, object.sphere.radius * 0.8,
+             camera);
     char text[96];
     std::snprintf(text, sizeof(text), "%s %.1f%%", detection.name.c_str(), detection.score);
-    const Eigen::Vector2d label_at = camera.Project(detection.cam_from_model * object.sphere.centre);
+    const Eigen::Vector2d label_at =
+        camera.Project(detection.cam_from_model * object.sphere.centre);
     DrawLabel(canvas, text, cv::Point2d(label_at.x(), label_at.y()) + cv::Point2d(8, -8),
               cv::Scalar(0, 255, 0));
   }

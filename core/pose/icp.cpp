@@ -104,15 +104,15 @@ Eigen::Matrix<double, 6, 1> ClampStep(const Eigen::Matrix<double, 6, 1>& update,
 Eigen::Vector3d MeanPosition(const RenderMesh& mesh) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3f& position : mesh.positions) sum += position.cast<double>();
-  return mesh.positions.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(mesh.positions.size()));
+  return mesh.positions.empty() ? sum
+                                : Eigen::Vector3d(sum / static_cast<double>(mesh.positions.size()));
 }
 
 // Whether `pose` wandered too far from `start` (translation of the model centre, rotation).
 bool Drifted(const Pose& start, const Pose& pose, const Eigen::Vector3d& centre,
              const IcpOptions& options) {
   const double moved_mm = ((pose * centre) - (start * centre)).norm();
-  const double turned_deg =
-      RadToDeg(Eigen::AngleAxisd(pose.R * start.R.transpose()).angle());
+  const double turned_deg = RadToDeg(Eigen::AngleAxisd(pose.R * start.R.transpose()).angle());
   return moved_mm > options.max_drift_mm || turned_deg > options.max_drift_deg;
 }
 
@@ -143,7 +143,8 @@ void IcpOptions::Validate() const {
 IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
                         const cv::Mat& depth_mm, const Pose& initial, const IcpOptions& options) {
   options.Validate();
-  if (depth_mm.type() != CV_32F || depth_mm.cols != camera.width || depth_mm.rows != camera.height) {
+  if (depth_mm.type() != CV_32F || depth_mm.cols != camera.width ||
+      depth_mm.rows != camera.height) {
     throw Error("icp: depth must be CV_32F mm of the camera's size");
   }
   IcpResult result;
@@ -158,8 +159,8 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
     // The gate shrinks geometrically: wide while the pose is rough, tight once it is close.
     const double gate = std::max(options.final_max_distance_mm,
                                  options.initial_max_distance_mm * std::pow(0.7, iteration));
-    const StepResult step = SolveStep(samples, result.cam_from_model, camera, depth_mm, gate,
-                                      options.huber_mm);
+    const StepResult step =
+        SolveStep(samples, result.cam_from_model, camera, depth_mm, gate, options.huber_mm);
     result.iterations = iteration + 1;
     if (step.inliers < 6) break;
     result.cam_from_model = ApplyUpdate(result.cam_from_model, ClampStep(step.update, options));
@@ -175,10 +176,10 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
   }
   const StepResult final_step = SolveStep(samples, result.cam_from_model, camera, depth_mm,
                                           options.final_max_distance_mm, options.huber_mm);
-  result.inlier_ratio = samples.empty() ? 0.0
-                                        : static_cast<double>(final_step.inliers) / samples.size();
-  result.rmse_mm = final_step.inliers > 0 ? std::sqrt(final_step.squared_error / final_step.inliers)
-                                          : 0.0;
+  result.inlier_ratio =
+      samples.empty() ? 0.0 : static_cast<double>(final_step.inliers) / samples.size();
+  result.rmse_mm =
+      final_step.inliers > 0 ? std::sqrt(final_step.squared_error / final_step.inliers) : 0.0;
   return result;
 }
 

@@ -32,8 +32,8 @@ struct IcpOptions {
 
 struct IcpResult {
   Pose cam_from_model;
-  double rmse_mm = 0.0;        // point-to-plane RMS over inliers at the end
-  double inlier_ratio = 0.0;   // visible samples with a scene point within the final gate
+  double rmse_mm = 0.0;       // point-to-plane RMS over inliers at the end
+  double inlier_ratio = 0.0;  // visible samples with a scene point within the final gate
   int iterations = 0;
   bool converged = false;
 };

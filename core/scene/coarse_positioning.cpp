@@ -96,10 +96,11 @@ CoarsePositioning PositionCoarsely(const RegionDivision& division, const cv::Mat
   cv::integral(edge_mask / 255, integral, CV_32S);
   CoarsePositioning result;
   for (int i = 0; i < static_cast<int>(division.blocks.size()); ++i) {
-    const auto layer = static_cast<std::size_t>(division.blocks[static_cast<std::size_t>(i)].layer_index);
+    const auto layer =
+        static_cast<std::size_t>(division.blocks[static_cast<std::size_t>(i)].layer_index);
     if (layer >= edge_ranges.size() || !edge_ranges[layer].valid) continue;
-    result.evaluated.push_back(EvaluateBlock(division, i, depth_mm, integral, focal_px,
-                                             diameter_mm, edge_ranges[layer], options));
+    result.evaluated.push_back(EvaluateBlock(division, i, depth_mm, integral, focal_px, diameter_mm,
+                                             edge_ranges[layer], options));
   }
   std::vector<int> order(result.evaluated.size());
   std::iota(order.begin(), order.end(), 0);

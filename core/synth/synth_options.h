@@ -57,8 +57,8 @@ struct SynthOptions {
   double roll_max_deg = 45.0;
   // Clutter: 1..clutter other models of models_dir and 1..clutter primitives (0: none).
   int clutter = 3;
-  double min_target_visibility = 0.6;     // of the target's silhouette pixels
-  double max_tilt_deg = 3.0;              // objects stand upright, give or take this
+  double min_target_visibility = 0.6;  // of the target's silhouette pixels
+  double max_tilt_deg = 3.0;           // objects stand upright, give or take this
   // The models' up axis (geometry/up_axis.h): they stand with it pointing up. Identity: +Z.
   Eigen::Matrix3d upright_from_model = Eigen::Matrix3d::Identity();
   int margin_px = 4;                      // the whole target stays this far inside the image

@@ -13,12 +13,12 @@
 #include <set>
 #include <string>
 
-#include "util/quoted.h"
 #include "dataset/bop_writer.h"
 #include "dataset/models_info.h"
 #include "synth/synthesizer.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/quoted.h"
 
 namespace layermod {
 namespace fs = std::filesystem;

@@ -30,7 +30,8 @@ class TempFile {
   explicit TempFile(const fs::path& target) {
     std::string pattern = target.string() + ".tmp.XXXXXX";
     fd_ = ::mkstemp(pattern.data());
-    if (fd_ < 0) throw IoError(Describe(target, "cannot create a file there (" + ErrnoText() + ")"));
+    if (fd_ < 0)
+      throw IoError(Describe(target, "cannot create a file there (" + ErrnoText() + ")"));
     path_ = pattern;
   }
   ~TempFile() {

@@ -11,6 +11,8 @@ std::string Quoted(std::string_view text) {
   return quoted;
 }
 
-std::string Quoted(const std::filesystem::path& path) { return Quoted(std::string_view(path.string())); }
+std::string Quoted(const std::filesystem::path& path) {
+  return Quoted(std::string_view(path.string()));
+}
 
 }  // namespace layermod

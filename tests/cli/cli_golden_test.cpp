@@ -69,11 +69,12 @@ void WriteFixtures(const fs::path& dir) {
   WriteFileAtomically(dir / "nocam.json", R"({"fx": 500, "fy": 500, "cx": 320, "cy": 240,
                                               "width": 640})");
   const CliResult trained = RunCli(SplitArgs(
-      "train --model " + (SourceDir() / "resources/sample/bracket.ply").string() +
-      " --camera " + (SourceDir() / "resources/sample/camera.json").string() +
+      "train --model " + (SourceDir() / "resources/sample/bracket.ply").string() + " --camera " +
+      (SourceDir() / "resources/sample/camera.json").string() +
       " --dmin 600 --dmax 700 --azimuth 0:120:240 --elevation 30:30:60 --roll 0:10:0 --out " +
       (dir / "tiny.layermod").string()));
-  if (trained.exit_code != 0) throw std::runtime_error("fixture training failed: " + trained.output);
+  if (trained.exit_code != 0)
+    throw std::runtime_error("fixture training failed: " + trained.output);
   std::string bytes = ReadFileBytes(dir / "tiny.layermod");
   WriteFileAtomically(dir / "truncated.layermod", bytes.substr(0, bytes.size() / 2));
   for (std::size_t i = bytes.size() / 3; i < bytes.size(); i += 101) bytes[i] ^= 0x5a;
@@ -102,14 +103,15 @@ TEST_P(CliGoldenTest, ExitCodeAndOutput) {
   };
   const CliResult result = RunCli(SplitArgs(expand(c.args)));
   const std::string expected = expand(c.expected_text);
-  const bool ok = result.exit_code == c.exit_code &&
-                  result.output.find(expected) != std::string::npos;
+  const bool ok =
+      result.exit_code == c.exit_code && result.output.find(expected) != std::string::npos;
   if (!ok) {
     std::ofstream(c.name + ".actual") << "exit " << result.exit_code << '\n' << result.output;
   }
   EXPECT_EQ(result.exit_code, c.exit_code) << result.output;
   EXPECT_NE(result.output.find(expected), std::string::npos)
-      << "expected to find: " << expected << "\nactual output:\n" << result.output;
+      << "expected to find: " << expected << "\nactual output:\n"
+      << result.output;
   // A failed command never leaves an output archive behind.
   if (c.exit_code != 0) {
     EXPECT_FALSE(fs::exists(temp_->path() / "a.layermod"));

@@ -18,7 +18,8 @@ std::vector<std::string> LongTraining(const fs::path& out) {
   return SplitArgs("train --model " + (SourceDir() / "resources/sample/bracket.ply").string() +
                    " --camera " + (SourceDir() / "resources/sample/camera.json").string() +
                    " --dmin 400 --dmax 3000 --azimuth 0:5:355 --elevation 0:5:90 --roll "
-                   "-45:5:45 --threads 1 --out " + out.string());
+                   "-45:5:45 --threads 1 --out " +
+                   out.string());
 }
 
 int CountEntries(const fs::path& dir) {

@@ -77,7 +77,8 @@ TEST(EvalReportTest, TableHasARowPerObjectAndAll) {
   const std::string table = SummaryTable(Summary(SampleRun()));
   EXPECT_THAT(table, HasSubstr("| 3 | ADD | 2 | 50.0 | 0.0 | 0.0 | 13.0 | 13.0 |"));
   EXPECT_THAT(table, HasSubstr("| all |  | 2 | 50.0 |"));
-  EXPECT_THAT(EvalReportMarkdown(Info(), Summary(SampleRun()), SampleRun()), HasSubstr("(scene 1)"));
+  EXPECT_THAT(EvalReportMarkdown(Info(), Summary(SampleRun()), SampleRun()),
+              HasSubstr("(scene 1)"));
 }
 
 TEST(EvalReportTest, WritesBothFilesIntoANewFolder) {

@@ -232,7 +232,8 @@ SupportPlane PlaneFacingCamera(double height_mm) {
 
 TEST(SupportPlaneDepthTest, FrontoParallelPlaneHasConstantDepth) {
   const PinholeCamera camera = test::KinectCamera();
-  const cv::Mat depth = SupportPlaneDepth(camera, PlaneFacingCamera(900.0), {10, 20, 30, 40}, 5000.0f);
+  const cv::Mat depth =
+      SupportPlaneDepth(camera, PlaneFacingCamera(900.0), {10, 20, 30, 40}, 5000.0f);
   ASSERT_EQ(depth.size(), cv::Size(30, 40));
   double low = 0.0;
   double high = 0.0;

@@ -49,9 +49,9 @@ TEST(IcpTest, RejectsBadInputs) {
   IcpOptions options;
   options.final_max_distance_mm = 100.0;  // above the initial gate
   const test::TestScene scene = test::RenderTestScene(truth);
-  EXPECT_THROW(RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), scene.depth_mm, truth,
-                             options),
-               Error);
+  EXPECT_THROW(
+      RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), scene.depth_mm, truth, options),
+      Error);
 }
 
 }  // namespace

@@ -14,12 +14,12 @@ namespace {
 TemplateRecord OnAxisTemplate(double layer_mm) {
   TemplateRecord tmpl;
   tmpl.layer_depth_mm = static_cast<float>(layer_mm);
-  tmpl.cam_from_model = CamFromModelForView({30.0, 40.0, 0.0}, test::SampleModel().sphere.centre,
-                                            layer_mm);
+  tmpl.cam_from_model =
+      CamFromModelForView({30.0, 40.0, 0.0}, test::SampleModel().sphere.centre, layer_mm);
   tmpl.bbox_px = cv::Rect(270, 190, 100, 100);
   const PinholeCamera camera = test::VgaCamera();
-  tmpl.centre_offset_px = cv::Point2f(static_cast<float>(camera.cx - 270),
-                                      static_cast<float>(camera.cy - 190));
+  tmpl.centre_offset_px =
+      cv::Point2f(static_cast<float>(camera.cx - 270), static_cast<float>(camera.cy - 190));
   tmpl.centre_minus_surface_mm = 20.0f;
   TemplateLevel level;
   for (int i = 0; i < 10; ++i) {
@@ -31,8 +31,8 @@ TemplateRecord OnAxisTemplate(double layer_mm) {
 
 TEST(InitialPoseTest, MatchAtTheTrainingPositionGivesTheTemplatePose) {
   const TemplateRecord tmpl = OnAxisTemplate(800.0);
-  const Pose pose = PoseFromMatch(tmpl, tmpl.bbox_px.tl(), 800.0,
-                                  test::SampleModel().sphere.centre, test::VgaCamera());
+  const Pose pose = PoseFromMatch(tmpl, tmpl.bbox_px.tl(), 800.0, test::SampleModel().sphere.centre,
+                                  test::VgaCamera());
   EXPECT_THAT(pose, test::PoseNear(tmpl.cam_from_model, 1e-9, 1e-6));
 }
 
@@ -49,7 +49,8 @@ TEST(InitialPoseTest, OffAxisMatchPutsTheCentreOnItsPixelAtTheDepth) {
   // The object is seen from the same direction relative to the viewing ray.
   const Eigen::Vector3d ray = centre_in_cam.normalized();
   const Eigen::Vector3d ray_in_model = pose.R.transpose() * ray;
-  const Eigen::Vector3d axis_in_template_model = tmpl.cam_from_model.R.transpose() * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d axis_in_template_model =
+      tmpl.cam_from_model.R.transpose() * Eigen::Vector3d::UnitZ();
   EXPECT_THAT(ray_in_model, test::MatrixNear(axis_in_template_model, 1e-9));
 }
 
@@ -58,7 +59,7 @@ TEST(InitialPoseTest, CentreDepthFromNormalFeatures) {
   cv::Mat depth(480, 640, CV_32F, cv::Scalar(780.0f));
   EXPECT_NEAR(EstimateCentreDepthMm(tmpl, {100, 100}, depth), 800.0, 1e-4);
   depth.setTo(0.0f);
-  EXPECT_EQ(EstimateCentreDepthMm(tmpl, {100, 100}, depth), 0.0);  // no valid depth
+  EXPECT_EQ(EstimateCentreDepthMm(tmpl, {100, 100}, depth), 0.0);    // no valid depth
   EXPECT_EQ(EstimateCentreDepthMm(tmpl, {-500, -500}, depth), 0.0);  // outside the image
 }
 

@@ -17,10 +17,12 @@ TEST(JobControlTest, ForwardsProgressAndCancellation) {
   CancelToken token;
   std::size_t last_done = 0;
   std::string last_stage;
-  JobControl job([&](std::size_t done, std::size_t, std::string_view stage) {
-    last_done = done;
-    last_stage = stage;
-  }, &token);
+  JobControl job(
+      [&](std::size_t done, std::size_t, std::string_view stage) {
+        last_done = done;
+        last_stage = stage;
+      },
+      &token);
   job.Report(7, 10, "render");
   EXPECT_EQ(last_done, 7u);
   EXPECT_EQ(last_stage, "render");
