@@ -2,6 +2,7 @@
 #include "cli/detector_flags.h"
 
 #include <charconv>
+#include <optional>
 #include <type_traits>
 
 #include "pipeline/detector_options.h"
@@ -10,37 +11,30 @@
 namespace layermod::cli {
 namespace {
 
-// The value a flag was given, as the JSON value of its field.
-nlohmann::json GivenValue(const CLI::Option& option, const std::string& flag, bool integer,
-                          bool text) {
-  const std::string value = option.as<std::string>();
-  if (text) return value;
+// A flag's text as a number of its field's kind; nullopt when it is not one.
+std::optional<nlohmann::json> ParseNumber(const std::string& text, DetectorFlags::Kind kind) {
   try {
     std::size_t used = 0;
-    const nlohmann::json number = integer ? nlohmann::json(std::stoll(value, &used))
-                                          : nlohmann::json(std::stod(value, &used));
-    if (used == value.size()) return number;
+    const nlohmann::json number = kind == DetectorFlags::Kind::kInteger
+                                      ? nlohmann::json(std::stoll(text, &used))
+                                      : nlohmann::json(std::stod(text, &used));
+    if (used == text.size()) return number;
   } catch (const std::exception&) {
   }
-  throw CLI::ValidationError(flag,
-                             "'" + value + "' is not " + (integer ? "an integer" : "a number"));
+  return std::nullopt;
 }
 
 // Checks a flag's text: a number (an integer for integer fields) within the field's range.
-CLI::Validator RangeCheck(const DetectorOptionField& field, bool integer) {
+CLI::Validator RangeCheck(const DetectorOptionField& field, DetectorFlags::Kind kind) {
   const std::string range = "in [" + FormatRange(field.min) + ", " + FormatRange(field.max) + "]";
   return CLI::Validator(
-      [field, integer, range](std::string& text) -> std::string {
-        std::size_t used = 0;
-        double value = 0.0;
-        try {
-          value = integer ? static_cast<double>(std::stoll(text, &used)) : std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
+      [field, kind, range](std::string& text) -> std::string {
+        const std::optional<nlohmann::json> number = ParseNumber(text, kind);
+        if (!number) {
+          return "'" + text + "' is not " +
+                 (kind == DetectorFlags::Kind::kInteger ? "an integer" : "a number");
         }
-        if (used == 0 || used != text.size()) {
-          return "'" + text + "' is not " + (integer ? "an integer" : "a number");
-        }
+        const double value = number->get<double>();
         if (!(value >= field.min && value <= field.max)) return "'" + text + "' is not " + range;
         return "";
       },
@@ -71,26 +65,27 @@ void DetectorFlags::AddTo(CLI::App* command, const DetectorOptions& defaults) {
     CLI::Option* option =
         command->add_option(OptionFlag(field))->description(std::string(field.help));
     option->default_str(DefaultText(value));
+    Kind kind = Kind::kText;
     if constexpr (std::is_same_v<T, DetectionMode>) {
       option->type_name("MODE")->check(CLI::IsMember({"scene-patch", "exhaustive", "color-only"}));
     } else {
-      option->type_name(std::is_integral_v<T> ? "INT" : "NUMBER")
-          ->check(RangeCheck(field, std::is_integral_v<T>));
+      kind = std::is_integral_v<T> ? Kind::kInteger : Kind::kReal;
+      option->type_name(kind == Kind::kInteger ? "INT" : "NUMBER")->check(RangeCheck(field, kind));
     }
-    flags_.push_back({option, std::string(field.key)});
+    flags_.push_back({option, std::string(field.key), kind});
   });
 }
 
 DetectorOptions DetectorFlags::Resolve() const {
   const DetectorOptions base =
       profile_path_.empty() ? defaults_ : ReadDetectorProfile(profile_path_, defaults_);
-  const nlohmann::json kinds = DetectorOptionsToJson(base);
   nlohmann::json given = nlohmann::json::object();
   for (const Flag& flag : flags_) {
     if (flag.option->count() == 0) continue;
-    const nlohmann::json& kind = kinds.at(flag.key);
-    given[flag.key] = GivenValue(*flag.option, flag.option->get_name(), kind.is_number_integer(),
-                                 kind.is_string());
+    // The option's validator has checked the text already.
+    const std::string text = flag.option->as<std::string>();
+    given[flag.key] =
+        flag.kind == Kind::kText ? nlohmann::json(text) : *ParseNumber(text, flag.kind);
   }
   try {
     return DetectorOptionsFromJson(given, "command line", base);

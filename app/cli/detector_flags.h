@@ -16,6 +16,8 @@ namespace layermod::cli {
 
 class DetectorFlags {
  public:
+  enum class Kind { kInteger, kReal, kText };  // how a flag's text becomes its field's value
+
   // Adds every flag to `command`, with the defaults of `defaults` in the help.
   void AddTo(CLI::App* command, const DetectorOptions& defaults = {});
 
@@ -28,6 +30,7 @@ class DetectorFlags {
   struct Flag {
     CLI::Option* option = nullptr;
     std::string key;
+    Kind kind = Kind::kText;
   };
   DetectorOptions defaults_;
   std::vector<Flag> flags_;

@@ -95,8 +95,9 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
     methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kColorOnly),
                LinemodMethod(linemod, "cv::linemod LINE-2D")};
   }
+  const EnvelopeMisses misses = FindEnvelopeMisses(detector, plan);
   for (MethodRun& run : RunMethods(plan.dataset, plan.frames, methods, metrics, job)) {
-    MarkEnvelopeCoverage(detector, plan, run);
+    MarkEnvelopeMisses(misses, run);
     result.methods.push_back(Summarize(run, plan.dataset.models));
   }
   return result;

@@ -53,14 +53,14 @@ EvalPlan PlanEvaluation(const std::filesystem::path& dataset_dir,
   return plan;
 }
 
-void MarkEnvelopeCoverage(const Detector& detector, const EvalPlan& plan, MethodRun& run) {
+EnvelopeMisses FindEnvelopeMisses(const Detector& detector, const EvalPlan& plan) {
   std::map<std::int32_t, ViewEnvelope> envelopes;
   for (std::size_t a = 0; a < detector.archive_count(); ++a) {
     for (const ArchiveObject& object : detector.archive(a).manifest().objects) {
       envelopes.emplace(object.obj_id, ViewEnvelope(detector.archive(a), object.obj_id));
     }
   }
-  std::map<std::tuple<int, int, std::int32_t>, std::string> outside;  // scene, image, object
+  EnvelopeMisses outside;
   for (const EvalFrame& frame : plan.frames) {
     const BopFrameAnnotations& annotations =
         plan.dataset.scenes[frame.scene_index].annotations.at(frame.image_id);
@@ -77,9 +77,13 @@ void MarkEnvelopeCoverage(const Detector& detector, const EvalPlan& plan, Method
       if (!covered) outside[{frame.scene_id, frame.image_id, target.obj_id}] = note;
     }
   }
+  return outside;
+}
+
+void MarkEnvelopeMisses(const EnvelopeMisses& misses, MethodRun& run) {
   for (TargetOutcome& outcome : run.outcomes) {
-    const auto it = outside.find({outcome.scene_id, outcome.image_id, outcome.obj_id});
-    if (it == outside.end()) continue;
+    const auto it = misses.find({outcome.scene_id, outcome.image_id, outcome.obj_id});
+    if (it == misses.end()) continue;
     outcome.outside_envelope = true;
     outcome.envelope_note = it->second;
   }
@@ -113,7 +117,7 @@ Evaluation Evaluate(const Detector& detector, const DetectorOptions& options,
       RunMethods(plan.dataset, plan.frames, {DetectorMethod(detector, options)}, metrics, job);
   Evaluation evaluation;
   evaluation.run = std::move(runs.front());
-  MarkEnvelopeCoverage(detector, plan, evaluation.run);
+  MarkEnvelopeMisses(FindEnvelopeMisses(detector, plan), evaluation.run);
   evaluation.summary = Summarize(evaluation.run, plan.dataset.models);
   return evaluation;
 }

@@ -6,6 +6,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "eval/eval_frames.h"
@@ -34,9 +37,13 @@ bool ModeNeedsDepth(DetectionMode mode);
 // The detector as a method: Detect() on the frame's colour, depth and camera.
 EvalMethod DetectorMethod(const Detector& detector, const DetectorOptions& options);
 
-// Marks the outcomes whose target no template of the detector's archives covers (every annotated
-// instance outside its object's ViewEnvelope), with the reason of the first.
-void MarkEnvelopeCoverage(const Detector& detector, const EvalPlan& plan, MethodRun& run);
+// The targets no template of the detector's archives covers (every annotated instance outside its
+// object's ViewEnvelope), by (scene id, image id, object id), with the reason of the first.
+using EnvelopeMisses = std::map<std::tuple<int, int, std::int32_t>, std::string>;
+EnvelopeMisses FindEnvelopeMisses(const Detector& detector, const EvalPlan& plan);
+
+// Marks the outcomes of those targets (outside_envelope, envelope_note).
+void MarkEnvelopeMisses(const EnvelopeMisses& misses, MethodRun& run);
 
 // The object ids of the detector's archives, ascending.
 std::vector<std::int32_t> DetectorObjectIds(const Detector& detector);
