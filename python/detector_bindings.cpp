@@ -91,6 +91,9 @@ void BindDetection(py::module_& m) {
       .def_readonly("score", &Detection::score, "LineMOD similarity, percent")
       .def_readonly("ranking", &Detection::ranking,
                     "score x depth fit^2 x colour agreement, percent: the order of detections")
+      .def_readonly("confidence", &Detection::confidence,
+                    "how likely the pose is right, 0..1 (detections below the detector's "
+                    "min_confidence are not reported)")
       .def_property_readonly("R", [](const Detection& d) { return RotationArray(d.R); })
       .def_property_readonly("t", [](const Detection& d) { return VectorArray(d.t_mm); })
       .def_property_readonly(
@@ -117,6 +120,9 @@ void BindDetection(py::module_& m) {
       .def_readonly("depth_inlier_ratio", &Detection::depth_inlier_ratio)
       .def_readonly("depth_fit", &Detection::depth_fit)
       .def_readonly("visible_ratio", &Detection::visible_ratio)
+      .def_readonly("occluded_ratio", &Detection::occluded_ratio)
+      .def_readonly("contradicted_ratio", &Detection::contradicted_ratio)
+      .def_readonly("surface_continuation", &Detection::surface_continuation)
       .def_readonly("color_agreement", &Detection::color_agreement)
       .def("__repr__", [](const Detection& d) {
         std::ostringstream text;

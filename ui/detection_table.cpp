@@ -24,8 +24,9 @@ QString RotationText(const Eigen::Matrix3d& rotation) {
 }  // namespace
 
 QStringList DetectionColumnTitles() {
-  return {QObject::tr("Object"),        QObject::tr("Score"),    QObject::tr("Layer"),
-          QObject::tr("Position (mm)"), QObject::tr("Rotation"), QObject::tr("ICP")};
+  return {QObject::tr("Object"),        QObject::tr("Confidence"), QObject::tr("Score"),
+          QObject::tr("Layer"),         QObject::tr("Position (mm)"), QObject::tr("Rotation"),
+          QObject::tr("ICP")};
 }
 
 QStringList DetectionRowTexts(const Detection& detection) {
@@ -37,6 +38,7 @@ QStringList DetectionRowTexts(const Detection& detection) {
                           : QObject::tr("not refined");
   return {
       object,
+      Number(detection.confidence, 2),
       QStringLiteral("%1 %").arg(Number(detection.score)),
       QObject::tr("%1: %2 mm").arg(detection.layer_index).arg(Number(detection.layer_depth_mm, 0)),
       QStringLiteral("(%1, %2, %3)").arg(Number(t.x()), Number(t.y()), Number(t.z())),

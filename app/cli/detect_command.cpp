@@ -94,8 +94,10 @@ void PrintDetections(const DetectionResult& result) {
   for (const Detection& d : result.detections) {
     const Eigen::Vector3d& t = d.cam_from_model.t;
     std::printf(
-        "obj %d %-12s score %5.1f%%  t = (%.1f, %.1f, %.1f) mm  layer %.0f mm  template %u\n",
-        d.obj_id, d.name.c_str(), d.score, t.x(), t.y(), t.z(), d.layer_depth_mm, d.template_id);
+        "obj %d %-12s confidence %.2f  score %5.1f%%  t = (%.1f, %.1f, %.1f) mm  layer %.0f mm  "
+        "template %u\n",
+        d.obj_id, d.name.c_str(), d.confidence, d.score, t.x(), t.y(), t.z(), d.layer_depth_mm,
+        d.template_id);
   }
   const StageTimings& t = result.timings;
   std::printf("time %.1f ms (prepare %.1f, regions %.1f, coarse %.1f, match %.1f, pose %.1f)\n",

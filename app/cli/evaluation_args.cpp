@@ -22,6 +22,9 @@ void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args) {
   command->add_option("--frames", args.frames, "At most this many frames (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  command->add_flag("--no-absent", args.no_absent,
+                    "Judge only the objects a frame shows (by default a detection of an object "
+                    "the frame does not show counts as a false one)");
   args.detector.AddTo(command);
 }
 
@@ -31,6 +34,7 @@ FrameSelectionOptions BuildSelection(const EvaluationArgs& args) {
   if (!args.targets.empty()) selection.targets = LoadBopTargets(args.targets);
   selection.min_visib_fract = args.min_visib;
   selection.max_frames = args.frames;
+  selection.absent_objects = !args.no_absent;
   selection.Validate();
   return selection;
 }

@@ -23,10 +23,12 @@ struct EvaluationArgs {
   double min_visib = 0.5;
   double km = 0.1;
   int frames = 0;
+  bool no_absent = false;
   DetectorFlags detector;
 };
 
-// --archive --dataset --scene --targets --min-visib --km --frames and the detector's flags.
+// --archive --dataset --scene --targets --min-visib --km --frames --no-absent and the detector's
+// flags.
 void AddEvaluationOptions(CLI::App* command, EvaluationArgs& args);
 
 FrameSelectionOptions BuildSelection(const EvaluationArgs& args);

@@ -17,19 +17,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The flags bind straight to SynthOptions, so its defaults are the ones --help shows; the
+// paths and the up axis are kept as text until the options are built.
 struct SynthArgs {
+  SynthOptions options;
   std::string models;
-  std::vector<std::int32_t> obj_ids;
-  int scenes = 10;
-  std::uint64_t seed = 1;
-  double dmin_mm = 650.0;
-  double dmax_mm = 1150.0;
   std::string backgrounds;
   std::string camera;
   std::string up_axis = "+z";
-  int clutter = 3;
   bool no_noise = false;
-  int threads = 0;
   std::string out;
 };
 
@@ -48,18 +44,11 @@ fs::path CameraPath(const SynthArgs& args) {
 }
 
 SynthOptions BuildOptions(const SynthArgs& args) {
-  SynthOptions options;
+  SynthOptions options = args.options;
   options.models_dir = args.models;
-  options.obj_ids = args.obj_ids;
-  options.scenes = args.scenes;
-  options.seed = args.seed;
-  options.dmin_mm = args.dmin_mm;
-  options.dmax_mm = args.dmax_mm;
   options.backgrounds_dir = args.backgrounds;
-  options.clutter = args.clutter;
   options.upright_from_model = UprightFromUpAxis(args.up_axis);
   options.noise.enabled = !args.no_noise;
-  options.threads = args.threads;
   options.out_dir = args.out;
   options.camera = LoadCameraJson(CameraPath(args));
   options.Validate();
@@ -77,6 +66,9 @@ void PrintSummary(const SynthSummary& summary) {
               summary.min_distance_mm, summary.max_distance_mm);
   std::printf("visibility    min %.2f, mean %.2f (target)\n", summary.min_visibility,
               summary.mean_visibility);
+  if (summary.images_without_target > 0) {
+    std::printf("absent        %d images without the target\n", summary.images_without_target);
+  }
   std::printf("time          %.1f s (%.1f images/s)\n", summary.seconds,
               summary.seconds > 0.0 ? summary.images / summary.seconds : 0.0);
   std::printf("dataset       %s\n", summary.out_dir.string().c_str());
@@ -99,22 +91,43 @@ void AddSynthCommand(CLI::App& app) {
       ->add_option("--models", args->models,
                    "BOP models folder (obj_NNNNNN.ply), or one PLY file for one object id")
       ->required();
-  command->add_option("--obj-ids", args->obj_ids, "Target object ids, one per image, cycled")
+  SynthOptions& o = args->options;
+  command->add_option("--obj-ids", o.obj_ids, "Target object ids, one per image, cycled")
       ->delimiter(',')
       ->required();
-  command->add_option("--scenes", args->scenes, "Number of images")->capture_default_str();
-  command->add_option("--seed", args->seed, "Random seed (same seed, same dataset)")
+  command->add_option("--scenes", o.scenes, "Number of images")->capture_default_str();
+  command->add_option("--seed", o.seed, "Random seed (same seed, same dataset)")
       ->capture_default_str();
-  command->add_option("--dmin", args->dmin_mm, "Nearest camera-to-target distance (mm)")
+  command->add_option("--dmin", o.dmin_mm, "Nearest camera-to-target distance (mm)")
       ->capture_default_str();
-  command->add_option("--dmax", args->dmax_mm, "Farthest camera-to-target distance (mm)")
+  command->add_option("--dmax", o.dmax_mm, "Farthest camera-to-target distance (mm)")
+      ->capture_default_str();
+  command->add_option("--elevation-min", o.elevation_min_deg, "Lowest camera elevation (deg)")
+      ->capture_default_str();
+  command->add_option("--elevation-max", o.elevation_max_deg, "Highest camera elevation (deg)")
+      ->capture_default_str();
+  command->add_option("--roll-max", o.roll_max_deg, "Camera roll up to +- this (deg)")
+      ->capture_default_str();
+  command
+      ->add_option("--min-visibility", o.min_target_visibility,
+                   "Least visible share of the target's silhouette")
+      ->capture_default_str();
+  command
+      ->add_option("--max-visibility", o.max_target_visibility,
+                   "Below 1: every target partly hidden, at most this share visible")
+      ->capture_default_str();
+  command->add_option("--instances", o.instances, "Copies of the target in each image (1..5)")
+      ->capture_default_str();
+  command
+      ->add_option("--absent", o.absent_fraction,
+                   "Share of images without the target (clutter only), 0..1")
       ->capture_default_str();
   command->add_option("--backgrounds", args->backgrounds,
                       "Folder of photos for the table texture (default: procedural)");
   command->add_option("--camera", args->camera,
                       "BOP camera.json (default: camera.json beside the models folder)");
   command
-      ->add_option("--clutter", args->clutter,
+      ->add_option("--clutter", o.clutter,
                    "Up to this many other models and primitives around the target (0..5)")
       ->capture_default_str();
   command->add_flag("--no-noise", args->no_noise, "Write the noiseless renders (no sensor model)");
@@ -123,7 +136,7 @@ void AddSynthCommand(CLI::App& app) {
                    "The models' axis that points up when they stand on the table")
       ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z"}))
       ->capture_default_str();
-  command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
+  command->add_option("--threads", o.threads, "Worker threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--out", args->out, "Dataset folder to create (new or empty)")->required();
   command->callback([args] { RunSynth(*args); });

@@ -13,6 +13,7 @@ Detection FromCore(const layermod::Detection& core) {
   detection.name = core.name;
   detection.score = core.score;
   detection.ranking = core.ranking;
+  detection.confidence = core.confidence;
   detection.R = core.cam_from_model.R;
   detection.t_mm = core.cam_from_model.t;
   detection.template_id = core.template_id;
@@ -26,6 +27,9 @@ Detection FromCore(const layermod::Detection& core) {
   detection.depth_inlier_ratio = core.verification.depth_inlier_ratio;
   detection.depth_fit = core.verification.depth_fit;
   detection.visible_ratio = core.verification.visible_ratio;
+  detection.occluded_ratio = core.verification.occluded_ratio;
+  detection.contradicted_ratio = core.verification.contradicted_ratio;
+  detection.surface_continuation = core.verification.surface_continuation;
   detection.color_agreement = core.verification.color_agreement;
   return detection;
 }
@@ -49,6 +53,7 @@ layermod::Detection ToCore(const Detection& detection) {
   core.name = detection.name;
   core.score = detection.score;
   core.ranking = detection.ranking;
+  core.confidence = detection.confidence;
   core.cam_from_model = {detection.R, detection.t_mm};
   core.template_id = detection.template_id;
   core.layer_index = detection.layer_index;
@@ -60,6 +65,9 @@ layermod::Detection ToCore(const Detection& detection) {
   core.verification.depth_inlier_ratio = detection.depth_inlier_ratio;
   core.verification.depth_fit = detection.depth_fit;
   core.verification.visible_ratio = detection.visible_ratio;
+  core.verification.occluded_ratio = detection.occluded_ratio;
+  core.verification.contradicted_ratio = detection.contradicted_ratio;
+  core.verification.surface_continuation = detection.surface_continuation;
   core.verification.color_agreement = detection.color_agreement;
   core.verification.accepted = true;
   return core;

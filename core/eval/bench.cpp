@@ -40,7 +40,7 @@ nlohmann::json MethodJson(const MethodSummary& method) {
           {"recall_percent", method.overall.AccuracyPercent()},
           {"proj2d_percent", method.overall.Proj2DPercent()},
           {"detection_rate_percent", method.overall.DetectionRatePercent()},
-          {"per_object", SummaryJson(method)["objects"]}};
+          {"per_object", ObjectSummariesJson(method)}};
 }
 
 nlohmann::json RatiosJson(const std::vector<MethodSummary>& methods) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "eval/eval_frames.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -55,6 +56,13 @@ std::vector<EvalTarget> FrameTargets(const BopFrameAnnotations& frame,
   return targets;
 }
 
+std::vector<std::int32_t> AbsentObjects(const BopFrameAnnotations& frame,
+                                        const std::set<std::int32_t>& obj_ids) {
+  std::set<std::int32_t> absent = obj_ids;
+  for (const BopGroundTruth& gt : frame.gt) absent.erase(gt.obj_id);
+  return {absent.begin(), absent.end()};
+}
+
 std::set<std::int32_t> Intersect(const std::set<std::int32_t>& a, const std::set<std::int32_t>& b) {
   std::set<std::int32_t> both;
   for (const std::int32_t id : a) {
@@ -90,13 +98,19 @@ std::vector<EvalFrame> SelectEvalFrames(const std::vector<BopScene>& scenes,
         if (listed == targets.end()) continue;
         wanted = Intersect(wanted, listed->second);
       }
-      EvalFrame frame{
-          s, scene.scene_id, image_id,
-          FrameTargets(scene.annotations.at(image_id), wanted, options.min_visib_fract)};
-      if (!frame.targets.empty()) frames.push_back(std::move(frame));
+      const BopFrameAnnotations& annotations = scene.annotations.at(image_id);
+      EvalFrame frame{s,
+                      scene.scene_id,
+                      image_id,
+                      FrameTargets(annotations, wanted, options.min_visib_fract),
+                      {}};
+      if (options.absent_objects) frame.absent = AbsentObjects(annotations, obj_ids);
+      if (!frame.targets.empty() || !frame.absent.empty()) frames.push_back(std::move(frame));
     }
   }
-  if (frames.empty()) {
+  const bool any_target = std::any_of(
+      frames.begin(), frames.end(), [](const EvalFrame& frame) { return !frame.targets.empty(); });
+  if (!any_target) {
     char visibility[32];
     std::snprintf(visibility, sizeof visibility, "%.2f", options.min_visib_fract);
     throw Error(Quoted(dataset_dir) +

@@ -7,6 +7,8 @@
 #include <ctime>
 #include <nlohmann/json.hpp>
 
+#include "dataset/bop_images.h"
+#include "eval/precision_recall.h"
 #include "pipeline/detector_options.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -37,7 +39,11 @@ nlohmann::json ObjectJson(const ObjectSummary& object) {
           {"proj2d_correct", object.proj2d_correct},
           {"box_correct", object.box_correct},
           {"outside_envelope", object.outside_envelope},
+          {"absent", object.absent},
+          {"absent_detected", object.absent_detected},
           {"accuracy_percent", object.AccuracyPercent()},
+          {"precision_percent", object.PrecisionPercent()},
+          {"absent_detected_percent", object.AbsentDetectedPercent()},
           {"proj2d_percent", object.Proj2DPercent()},
           {"detection_rate_percent", object.DetectionRatePercent()},
           {"mean_time_ms", object.mean_time_ms},
@@ -77,14 +83,25 @@ nlohmann::json RunInfoJson(const EvalRunInfo& info) {
           {"min_box_iou", info.metrics.min_box_iou}};
 }
 
-nlohmann::json SummaryJson(const MethodSummary& summary) {
+nlohmann::json ObjectSummariesJson(const MethodSummary& summary) {
   nlohmann::json objects = nlohmann::json::array();
   for (const ObjectSummary& object : summary.objects) objects.push_back(ObjectJson(object));
+  return objects;
+}
+
+nlohmann::json SummaryJson(const MethodSummary& summary, const MethodRun& run) {
+  const nlohmann::json objects = ObjectSummariesJson(summary);
   nlohmann::json overall = ObjectJson(summary.overall);
   overall.erase("obj_id");
   overall.erase("metric");
   overall.erase("diameter_mm");
+  const PrecisionRecallCurve curve = ComputePrecisionRecall(run.outcomes);
+  nlohmann::json points = nlohmann::json::array();
+  for (const PrecisionRecallPoint& point : curve.points) {
+    points.push_back({point.threshold, point.precision, point.recall});
+  }
   return {{"method", summary.name},
+          {"min_confidence", summary.min_confidence},
           {"frames", summary.frames},
           {"objects", objects},
           {"overall", overall},
@@ -92,20 +109,32 @@ nlohmann::json SummaryJson(const MethodSummary& summary) {
           {"frame_time_ms",
            {{"mean", summary.mean_frame_ms},
             {"median", summary.median_frame_ms},
-            {"p90", summary.p90_frame_ms}}}};
+            {"p90", summary.p90_frame_ms}}},
+          {"precision_recall",
+           {{"area", curve.area},
+            {"targets", curve.targets},
+            {"points", points},
+            {"point_fields", {"threshold", "precision", "recall"}}}}};
 }
 
 nlohmann::json OutcomesJson(const MethodRun& run) {
   nlohmann::json outcomes = nlohmann::json::array();
   for (const TargetOutcome& outcome : run.outcomes) {
-    nlohmann::json entry = {{"scene_id", outcome.scene_id},
-                            {"im_id", outcome.image_id},
-                            {"obj_id", outcome.obj_id},
-                            {"detected", outcome.detected},
-                            {"time_ms", outcome.frame_time_ms}};
+    nlohmann::json entry = {{"scene_id", outcome.scene_id}, {"im_id", outcome.image_id},
+                            {"obj_id", outcome.obj_id},     {"present", outcome.present},
+                            {"detected", outcome.detected}, {"time_ms", outcome.frame_time_ms}};
     if (outcome.outside_envelope) entry["outside_envelope"] = outcome.envelope_note;
     if (outcome.detected) {
       entry["score"] = outcome.score;
+      entry["confidence"] = outcome.confidence;
+      nlohmann::json features = nlohmann::json::object();
+      const auto names = ConfidenceFeatures::Names();
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        features[std::string(names[i])] = outcome.features.values[i];
+      }
+      entry["features"] = features;
+    }
+    if (outcome.detected && outcome.present) {
       entry["error_mm"] = FiniteOrNull(outcome.pose.error_mm);
       entry["proj2d_px"] = FiniteOrNull(outcome.pose.proj2d_px);
       entry["box_iou"] = outcome.pose.box_iou;
@@ -123,7 +152,7 @@ nlohmann::json EvalReportJson(const EvalRunInfo& info, const MethodSummary& summ
   return {{"tool_version", ToolVersion()},
           {"created_utc", UtcTimestamp()},
           {"setup", RunInfoJson(info)},
-          {"summary", SummaryJson(summary)},
+          {"summary", SummaryJson(summary, run)},
           {"outcomes", OutcomesJson(run)}};
 }
 
@@ -155,6 +184,22 @@ std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& 
   return text;
 }
 
+std::string ConfidenceText(const MethodSummary& summary, const MethodRun& run) {
+  const ObjectSummary& all = summary.overall;
+  const PrecisionRecallCurve curve = ComputePrecisionRecall(run.outcomes);
+  std::string text = "Detections accepted at confidence >= " + Fixed(summary.min_confidence, 2) +
+                     ": precision " + Fixed(all.PrecisionPercent(), 1) + " %, recall " +
+                     Fixed(all.AccuracyPercent(), 1) + " %";
+  if (all.absent > 0) {
+    text += "; objects not in the frame detected in " + std::to_string(all.absent_detected) +
+            " of " + std::to_string(all.absent) + " cases (" +
+            Fixed(all.AbsentDetectedPercent(), 1) + " %)";
+  }
+  text +=
+      ". Area under the precision-recall curve: " + Fixed(curve.area, 3) + " (`pr_curve.png`).\n";
+  return text;
+}
+
 std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary,
                                const MethodRun& run) {
   std::string archives;
@@ -178,6 +223,7 @@ std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& sum
           " %. Time per frame: mean " + Fixed(summary.mean_frame_ms, 1) + " ms, median " +
           Fixed(summary.median_frame_ms, 1) + " ms, p90 " + Fixed(summary.p90_frame_ms, 1) +
           " ms.\n";
+  text += "\n" + ConfidenceText(summary, run);
   const std::string coverage = EnvelopeCoverageText(summary, run);
   if (!coverage.empty()) text += "\n" + coverage;
   return text;
@@ -199,6 +245,9 @@ void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& in
   if (ec) throw IoError(Quoted(out_dir) + ": cannot create the folder (" + ec.message() + ")");
   WriteFileAtomically(out_dir / "report.json", EvalReportJson(info, summary, run).dump(2) + "\n");
   WriteFileAtomically(out_dir / "report.md", EvalReportMarkdown(info, summary, run));
+  WritePngAtomically(out_dir / "pr_curve.png",
+                     DrawPrecisionRecall(ComputePrecisionRecall(run.outcomes),
+                                         PointAt(run.outcomes, summary.min_confidence)));
 }
 
 }  // namespace layermod

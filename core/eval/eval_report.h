@@ -31,7 +31,9 @@ struct EvalRunInfo {
 std::string UtcTimestamp();
 
 nlohmann::json RunInfoJson(const EvalRunInfo& info);
-nlohmann::json SummaryJson(const MethodSummary& summary);
+nlohmann::json ObjectSummariesJson(const MethodSummary& summary);  // one entry per object
+// With the precision-recall curve of `run`.
+nlohmann::json SummaryJson(const MethodSummary& summary, const MethodRun& run);
 nlohmann::json OutcomesJson(const MethodRun& run);
 
 // {tool_version, created_utc, setup, summary, outcomes}.
@@ -51,7 +53,12 @@ std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& 
 // writable folder): lets a run fail before the work rather than after it.
 void CheckReportFolder(const std::filesystem::path& out_dir);
 
-// Creates `out_dir` if needed and writes report.json and report.md atomically. Throws IoError.
+// Precision and recall at the run's threshold, false detections of absent objects, the area
+// under the precision-recall curve.
+std::string ConfidenceText(const MethodSummary& summary, const MethodRun& run);
+
+// Creates `out_dir` if needed and writes report.json, report.md and pr_curve.png atomically. Throws
+// IoError.
 void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& info,
                      const MethodSummary& summary, const MethodRun& run);
 

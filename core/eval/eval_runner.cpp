@@ -36,6 +36,13 @@ PoseScore ClosestInstanceScore(const EvalTarget& target, const BopFrame& image,
   return best;
 }
 
+void NoteDetection(const Detection& detection, TargetOutcome& outcome) {
+  outcome.detected = true;
+  outcome.score = detection.score;
+  outcome.confidence = detection.confidence;
+  outcome.features = FeaturesOf(detection);
+}
+
 double TimedMs(const std::function<void()>& work) {
   const auto start = std::chrono::steady_clock::now();
   work();
@@ -58,9 +65,20 @@ std::vector<TargetOutcome> ScoreFrame(const EvalFrame& frame, const BopFrame& im
     outcome.frame_time_ms = frame_time_ms;
     const EvalModel& model = ModelOf(models, target.obj_id);
     if (const Detection* detection = BestDetectionOf(detections, target.obj_id)) {
-      outcome.detected = true;
-      outcome.score = detection->score;
+      NoteDetection(*detection, outcome);
       outcome.pose = ClosestInstanceScore(target, image, model, detection->cam_from_model, options);
+    }
+    outcomes.push_back(outcome);
+  }
+  for (const std::int32_t obj_id : frame.absent) {
+    TargetOutcome outcome;
+    outcome.scene_id = frame.scene_id;
+    outcome.image_id = frame.image_id;
+    outcome.obj_id = obj_id;
+    outcome.present = false;
+    outcome.frame_time_ms = frame_time_ms;
+    if (const Detection* detection = BestDetectionOf(detections, obj_id)) {
+      NoteDetection(*detection, outcome);
     }
     outcomes.push_back(outcome);
   }

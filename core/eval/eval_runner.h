@@ -15,6 +15,7 @@
 #include "eval/eval_frames.h"
 #include "eval/eval_model.h"
 #include "eval/pose_scoring.h"
+#include "pipeline/confidence.h"
 #include "pipeline/detector.h"
 #include "util/job.h"
 
@@ -37,9 +38,14 @@ struct TargetOutcome {
   int scene_id = 0;
   int image_id = 0;
   std::int32_t obj_id = 0;
+  // false: the frame does not show the object at all (EvalFrame::absent); a detection of it is
+  // a false one.
+  bool present = true;
   bool detected = false;  // the method returned a detection of this object
   float score = 0.0f;     // of that detection
-  PoseScore pose;         // against the closest annotated instance; meaningful when detected
+  double confidence = 0.0;
+  ConfidenceFeatures features;  // of that detection, for calibrating the confidence
+  PoseScore pose;               // against the closest annotated instance; meaningful when detected
   double frame_time_ms = 0.0;
   // No annotated instance of the target lies inside the archive's view envelope
   // (eval/envelope_coverage.h): no template could match it.
@@ -54,7 +60,8 @@ struct MethodRun {
 };
 
 // Judges the first detection of each target's object against each of the target's annotated
-// instances and keeps the closest (smallest ADD/ADD-S). Throws Error when a target's object is
+// instances and keeps the closest (smallest ADD/ADD-S); notes the first detection of each absent
+// object (then present = false). Throws Error when a target's object is
 // not in `models`.
 std::vector<TargetOutcome> ScoreFrame(const EvalFrame& frame, const BopFrame& image,
                                       const std::vector<Detection>& detections,

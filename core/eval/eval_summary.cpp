@@ -13,18 +13,24 @@ double Mean(const std::vector<double>& values) {
   return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
 }
 
-ObjectSummary SummarizeOutcomes(const std::vector<const TargetOutcome*>& outcomes) {
+ObjectSummary SummarizeOutcomes(const std::vector<const TargetOutcome*>& outcomes,
+                                double min_confidence) {
   ObjectSummary summary;
   std::vector<double> times_ms;
   for (const TargetOutcome* outcome : outcomes) {
+    if (!outcome->present) {
+      ++summary.absent;
+      summary.absent_detected += Accepted(*outcome, min_confidence) ? 1 : 0;
+      continue;
+    }
     ++summary.frames;
     times_ms.push_back(outcome->frame_time_ms);
-    if (!outcome->detected) continue;
+    summary.outside_envelope += outcome->outside_envelope ? 1 : 0;
+    if (!Accepted(*outcome, min_confidence)) continue;
     ++summary.detected;
     summary.correct += outcome->pose.correct ? 1 : 0;
     summary.proj2d_correct += outcome->pose.proj2d_correct ? 1 : 0;
     summary.box_correct += outcome->pose.box_correct ? 1 : 0;
-    summary.outside_envelope += outcome->outside_envelope ? 1 : 0;
   }
   summary.mean_time_ms = Mean(times_ms);
   summary.median_time_ms = Quantile(times_ms, 0.5);
@@ -42,9 +48,15 @@ double Quantile(std::vector<double> values, double fraction) {
   return values[below] + (rank - static_cast<double>(below)) * (values[above] - values[below]);
 }
 
-MethodSummary Summarize(const MethodRun& run, const std::map<std::int32_t, EvalModel>& models) {
+bool Accepted(const TargetOutcome& outcome, double min_confidence) {
+  return outcome.detected && outcome.confidence >= min_confidence;
+}
+
+MethodSummary Summarize(const MethodRun& run, const std::map<std::int32_t, EvalModel>& models,
+                        double min_confidence) {
   MethodSummary summary;
   summary.name = run.name;
+  summary.min_confidence = min_confidence;
   std::map<std::int32_t, std::vector<const TargetOutcome*>> by_object;
   std::vector<const TargetOutcome*> all;
   for (const TargetOutcome& outcome : run.outcomes) {
@@ -52,21 +64,23 @@ MethodSummary Summarize(const MethodRun& run, const std::map<std::int32_t, EvalM
     all.push_back(&outcome);
   }
   double accuracy_sum = 0.0;
+  int objects_with_targets = 0;
   for (const auto& [obj_id, outcomes] : by_object) {
-    ObjectSummary object = SummarizeOutcomes(outcomes);
+    ObjectSummary object = SummarizeOutcomes(outcomes, min_confidence);
     object.obj_id = obj_id;
     if (const auto model = models.find(obj_id); model != models.end()) {
       object.symmetric_metric = model->second.symmetric;
       object.diameter_mm = model->second.diameter_mm;
     }
-    accuracy_sum += object.AccuracyPercent();
+    if (object.frames > 0) {  // an object only ever absent has no accuracy
+      accuracy_sum += object.AccuracyPercent();
+      ++objects_with_targets;
+    }
     summary.objects.push_back(object);
   }
-  summary.overall = SummarizeOutcomes(all);
-  if (!summary.objects.empty()) {
-    summary.mean_object_accuracy_percent =
-        accuracy_sum / static_cast<double>(summary.objects.size());
-  }
+  summary.overall = SummarizeOutcomes(all, min_confidence);
+  if (objects_with_targets > 0)
+    summary.mean_object_accuracy_percent = accuracy_sum / objects_with_targets;
   summary.frames = static_cast<int>(run.frame_times_ms.size());
   summary.mean_frame_ms = Mean(run.frame_times_ms);
   summary.median_frame_ms = Quantile(run.frame_times_ms, 0.5);

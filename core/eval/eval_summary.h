@@ -17,12 +17,24 @@ struct ObjectSummary {
   std::int32_t obj_id = 0;  // 0: all objects together
   bool symmetric_metric = false;
   double diameter_mm = 0.0;
-  int frames = 0;  // targets judged
-  int detected = 0;
+  int frames = 0;            // targets judged (objects the frame shows)
+  int detected = 0;          // accepted detections (confidence at least the threshold) of those
   int correct = 0;           // ADD(-S) <= km * d
   int proj2d_correct = 0;    // Proj2D <= threshold
   int box_correct = 0;       // projected box IoU >= threshold: counts as a 2D detection
   int outside_envelope = 0;  // targets no template of the archive covers
+  int absent = 0;            // (frame, object) pairs where the frame does not show the object
+  int absent_detected = 0;   // of those, with an accepted detection: false detections
+
+  // Accepted detections that are right, over all accepted ones (on targets and absent pairs);
+  // 100 when nothing was accepted.
+  double PrecisionPercent() const {
+    const int accepted = detected + absent_detected;
+    return accepted > 0 ? 100.0 * correct / accepted : 100.0;
+  }
+  double AbsentDetectedPercent() const {
+    return absent > 0 ? 100.0 * absent_detected / absent : 0.0;
+  }
   double mean_time_ms = 0.0;
   double median_time_ms = 0.0;
 
@@ -36,6 +48,7 @@ struct ObjectSummary {
 
 struct MethodSummary {
   std::string name;
+  double min_confidence = 0.0;                // detections below it were not counted as accepted
   std::vector<ObjectSummary> objects;         // ascending obj_id
   ObjectSummary overall;                      // every target counted once
   double mean_object_accuracy_percent = 0.0;  // the paper's "average" row: mean over objects
@@ -48,6 +61,11 @@ struct MethodSummary {
 // The `fraction` quantile (0..1) with linear interpolation between ranks; 0 for no values.
 double Quantile(std::vector<double> values, double fraction);
 
-MethodSummary Summarize(const MethodRun& run, const std::map<std::int32_t, EvalModel>& models);
+// Outcomes whose confidence is below `min_confidence` count as not detected (for a run whose
+// method did not apply the threshold itself).
+bool Accepted(const TargetOutcome& outcome, double min_confidence);
+
+MethodSummary Summarize(const MethodRun& run, const std::map<std::int32_t, EvalModel>& models,
+                        double min_confidence = 0.0);
 
 }  // namespace layermod

@@ -113,12 +113,16 @@ Evaluation Evaluate(const Detector& detector, const DetectorOptions& options,
   metrics.Validate();
   const EvalPlan plan = PlanEvaluation(dataset_dir, DetectorObjectIds(detector), selection,
                                        ModeNeedsDepth(options.mode));
-  std::vector<MethodRun> runs =
-      RunMethods(plan.dataset, plan.frames, {DetectorMethod(detector, options)}, metrics, job);
+  // The detector reports every detection; the threshold is applied to the outcomes, so that the
+  // same run gives the precision-recall curve over all thresholds.
+  DetectorOptions unthresholded = options;
+  unthresholded.min_confidence = 0.0;
+  std::vector<MethodRun> runs = RunMethods(plan.dataset, plan.frames,
+                                           {DetectorMethod(detector, unthresholded)}, metrics, job);
   Evaluation evaluation;
   evaluation.run = std::move(runs.front());
   MarkEnvelopeMisses(FindEnvelopeMisses(detector, plan), evaluation.run);
-  evaluation.summary = Summarize(evaluation.run, plan.dataset.models);
+  evaluation.summary = Summarize(evaluation.run, plan.dataset.models, options.min_confidence);
   return evaluation;
 }
 

@@ -11,6 +11,7 @@ nlohmann::ordered_json DetectionToJson(const Detection& detection) {
           {"name", detection.name},
           {"score", detection.score},
           {"ranking", detection.ranking},
+          {"confidence", detection.confidence},
           {"cam_R_m2c", bop_internal::RotationJson(detection.cam_from_model.R)},
           {"cam_t_m2c", bop_internal::VectorJson(detection.cam_from_model.t)},
           {"template_id", detection.template_id},
@@ -23,6 +24,9 @@ nlohmann::ordered_json DetectionToJson(const Detection& detection) {
            {{"depth_inlier_ratio", verification.depth_inlier_ratio},
             {"depth_fit", verification.depth_fit},
             {"visible_ratio", verification.visible_ratio},
+            {"occluded_ratio", verification.occluded_ratio},
+            {"contradicted_ratio", verification.contradicted_ratio},
+            {"surface_continuation", verification.surface_continuation},
             {"color_agreement", verification.color_agreement}}}};
 }
 

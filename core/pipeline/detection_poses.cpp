@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "pipeline/confidence.h"
 #include "pose/initial_pose.h"
 
 namespace layermod {
@@ -74,7 +75,10 @@ std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
     if (detection.verification.accepted) verified.push_back(std::move(detection));
   }
   const bool has_depth = !capture.depth_mm.empty();
-  for (Detection& detection : verified) detection.ranking = RankingScore(detection, has_depth);
+  for (Detection& detection : verified) {
+    detection.ranking = RankingScore(detection, has_depth);
+    detection.confidence = DetectionConfidence(FeaturesOf(detection), has_depth);
+  }
   std::stable_sort(verified.begin(), verified.end(), RanksHigher);
   std::vector<Detection> kept;
   for (Detection& detection : verified) {
@@ -85,6 +89,11 @@ std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
     kept.push_back(std::move(detection));
     if (static_cast<int>(kept.size()) == options.max_instances) break;
   }
+  // The threshold applies to the instances chosen, so that a lower one never stands in for a
+  // doubtful best one.
+  std::erase_if(kept, [&](const Detection& detection) {
+    return detection.confidence < options.min_confidence;
+  });
   return kept;
 }
 

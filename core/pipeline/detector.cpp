@@ -177,6 +177,9 @@ void DetectorOptions::Validate() const {
   if (max_instances < 1 || pose_candidates < 1) {
     throw Error("detector: max_instances and pose_candidates must be >= 1");
   }
+  if (!(min_confidence >= 0.0 && min_confidence <= 1.0)) {
+    throw Error("detector: min_confidence must lie in [0, 1]");
+  }
 }
 
 Detector::Detector(std::vector<TemplateArchive> archives)

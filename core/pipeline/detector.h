@@ -32,6 +32,8 @@ struct DetectorOptions {
   MatchOptions match;
   int max_instances = 1;     // detections kept per object
   int pose_candidates = 12;  // best raw matches per object that get a pose and a verification
+  // Detections less confident (pipeline/confidence.h) are not reported.
+  double min_confidence = 0.5;
   IcpOptions icp;
   VerificationOptions verification;
 
@@ -48,8 +50,9 @@ struct Capture {
 struct Detection {
   std::int32_t obj_id = 0;
   std::string name;
-  float score = 0.0f;    // LineMOD similarity of the matched template, percent
-  double ranking = 0.0;  // what detections are ordered by (RankingScore), percent
+  float score = 0.0f;       // LineMOD similarity of the matched template, percent
+  double ranking = 0.0;     // what detections are ordered by (RankingScore), percent
+  double confidence = 0.0;  // how likely the pose is right, 0..1 (pipeline/confidence.h)
   Pose cam_from_model;
   std::uint32_t template_id = 0;
   int layer_index = 0;

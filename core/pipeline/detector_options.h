@@ -40,6 +40,10 @@ void VisitDetectorOptions(Options& options, Visitor&& visitor) {
           options.mode);
   visitor(DetectorOptionField{"instances", "Detections kept per object", output, 1, 1000},
           options.max_instances);
+  visitor(DetectorOptionField{"min_confidence",
+                              "Detections less confident than this (0..1) are not reported", output,
+                              0, 1},
+          options.min_confidence);
   visitor(DetectorOptionField{"pose_candidates",
                               "Best raw matches per object that get a pose and a verification",
                               pose, 1, 1000},

@@ -39,6 +39,43 @@ DepthCounts CompareDepth(const RenderedView& view, const cv::Mat& depth_mm, doub
   return counts;
 }
 
+constexpr int kRingPx = 4;  // width of the ring outside the silhouette
+
+// The view's mask and depth pasted into `area` (a rectangle of the image containing view.roi).
+void PasteView(const RenderedView& view, const cv::Rect& area, cv::Mat& mask, cv::Mat& depth) {
+  mask = cv::Mat::zeros(area.size(), CV_8U);
+  depth = cv::Mat::zeros(area.size(), CV_32F);
+  const cv::Rect inside(view.roi.tl() - area.tl(), view.roi.size());
+  view.mask.copyTo(mask(inside));
+  view.depth_mm.copyTo(depth(inside), view.mask);
+}
+
+double SurfaceContinuation(const RenderedView& view, const cv::Mat& depth_mm, double tolerance_mm) {
+  const cv::Rect image(0, 0, depth_mm.cols, depth_mm.rows);
+  const cv::Rect area = cv::Rect(view.roi.x - kRingPx, view.roi.y - kRingPx,
+                                 view.roi.width + 2 * kRingPx, view.roi.height + 2 * kRingPx) &
+                        image;
+  cv::Mat mask, depth;
+  PasteView(view, area, mask, depth);
+  const cv::Mat kernel =
+      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * kRingPx + 1, 2 * kRingPx + 1));
+  cv::Mat grown, nearby_depth;
+  cv::dilate(mask, grown, kernel);
+  cv::dilate(depth, nearby_depth, kernel);  // the farthest model depth within the ring's width
+  int judged = 0;
+  int continued = 0;
+  for (int y = 0; y < area.height; ++y) {
+    for (int x = 0; x < area.width; ++x) {
+      if (grown.at<std::uint8_t>(y, x) == 0 || mask.at<std::uint8_t>(y, x) != 0) continue;
+      const float scene = depth_mm.at<float>(y + area.y, x + area.x);
+      if (scene <= 0.0f) continue;
+      ++judged;
+      if (std::abs(scene - nearby_depth.at<float>(y, x)) <= tolerance_mm) ++continued;
+    }
+  }
+  return judged > 0 ? static_cast<double>(continued) / judged : 0.0;
+}
+
 double HueDistanceDeg(int a, int b) {  // OpenCV hue is 0..179 for 0..358 degrees
   const int difference = std::abs(a - b) % 180;
   return 2.0 * std::min(difference, 180 - difference);
@@ -93,6 +130,12 @@ Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, con
     result.depth_fit = judged > 0 ? counts.agreement / judged : 0.0;
     result.visible_ratio =
         static_cast<double>(counts.consistent + counts.occluded) / result.silhouette_px;
+    const int measured = judged + counts.occluded;
+    if (measured > 0) {
+      result.occluded_ratio = static_cast<double>(counts.occluded) / measured;
+      result.contradicted_ratio = static_cast<double>(counts.contradicted) / measured;
+    }
+    result.surface_continuation = SurfaceContinuation(view, depth_mm, options.depth_tolerance_mm);
   }
   result.color_agreement = ColorAgreement(view, color_bgr, options.hue_tolerance_deg);
   const bool depth_ok =

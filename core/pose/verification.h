@@ -28,6 +28,14 @@ struct Verification {
   // max(0, 1 - |scene - model| / tolerance), 1 for an exact fit. Unlike the inlier ratio it
   // tells a pose a few millimetres off (a neighbouring rotation after ICP) from the true one.
   double depth_fit = 0.0;
+  // Over the silhouette pixels the scene measures: a nearer scene (an occluder in front) and a
+  // farther one (the model's surface is not there).
+  double occluded_ratio = 0.0;
+  double contradicted_ratio = 0.0;
+  // In a thin ring just outside the silhouette: the share of measured pixels whose depth
+  // continues the model's nearby surface. A model laid over part of a larger surface (a wrong
+  // template on a box, a wall, the table) has its outline where the scene has none.
+  double surface_continuation = 0.0;
   int silhouette_px = 0;
   bool accepted = false;
 };

@@ -252,6 +252,16 @@ void PlaceClutter(SceneLayout& layout, const std::map<std::int32_t, SynthModel>&
     if (obj_id != layout.items.front().obj_id) others.push_back(&model);
   }
   std::shuffle(others.begin(), others.end(), rng);
+  const SynthModel* target = nullptr;
+  for (const auto& [obj_id, model] : models) {
+    if (obj_id == layout.items.front().obj_id) target = &model;
+  }
+  for (int copy = 1; copy < options.instances && target != nullptr; ++copy) {
+    if (auto item =
+            PlaceNear(layout, target->mesh, target->sphere, target->obj_id, false, options, rng)) {
+      layout.items.push_back(*item);
+    }
+  }
   const int model_count =
       std::min<int>(UniformInt(rng, 1, options.clutter), static_cast<int>(others.size()));
   const int primitive_count = UniformInt(rng, 1, options.clutter);
@@ -270,6 +280,39 @@ void PlaceClutter(SceneLayout& layout, const std::map<std::int32_t, SynthModel>&
     }
     if (item) layout.items.push_back(*item);
   }
+}
+
+void PlaceSightOccluder(SceneLayout& layout, double cover, std::mt19937_64& rng) {
+  const PlacedItem& target = layout.items.front();
+  const Eigen::Vector3d to_camera = layout.camera.centre_in_world - target.bound.centre;
+  const double along = Uniform(rng, 0.3, 0.6);  // of the way from the target to the camera
+  // Sideways in the view, so that the occluder's edge crosses the target: at `cover` = 0 it
+  // just touches the target's outline, at 1 it is centred on it.
+  const Eigen::Vector3d forward = -to_camera.normalized();
+  Eigen::Vector3d side = forward.cross(Eigen::Vector3d::UnitZ());
+  if (side.norm() < 1e-6) side = Eigen::Vector3d::UnitX();
+  side.normalize();
+  const Eigen::Vector3d up = side.cross(forward);
+  const double angle = Uniform(rng, -kPi, kPi);
+  const Eigen::Vector3d direction = std::cos(angle) * side + std::sin(angle) * up;
+  const double scale = 1.0 - along;  // the occluder's size in the target's image terms
+  const double half_width = target.bound.radius * scale * Uniform(rng, 0.6, 1.2);
+  const double offset = (1.0 - cover) * (target.bound.radius + half_width) * scale;
+  layout.primitives.push_back(RandomPrimitive(false, rng));
+  RenderMesh& mesh = layout.primitives.back();
+  const Sphere sphere = PrimitiveSphere(mesh);
+  const double shrink = half_width / std::max(sphere.radius, 1.0);
+  for (Eigen::Vector3f& p : mesh.positions) {
+    p = ((p.cast<double>() - sphere.centre) * shrink).cast<float>();
+  }
+  PlacedItem item;
+  item.mesh = &mesh;
+  item.world_from_item.R = Eigen::AngleAxisd(Uniform(rng, -kPi, kPi), direction).toRotationMatrix();
+  item.world_from_item.t = target.bound.centre + along * to_camera + offset * direction;
+  item.footprint_centre = item.world_from_item.t.head<2>();
+  item.bound.centre = item.world_from_item.t;
+  item.bound.radius = half_width;
+  layout.items.push_back(item);
 }
 
 void SampleTable(SceneLayout& layout, std::mt19937_64& rng) {

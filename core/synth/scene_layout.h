@@ -86,6 +86,11 @@ std::optional<CameraSample> SampleCamera(const PlacedItem& target, const Pinhole
 void PlaceClutter(SceneLayout& layout, const std::map<std::int32_t, SynthModel>& models,
                   const SynthOptions& options, std::mt19937_64& rng);
 
+// Adds a primitive floating in the line of sight between the camera and the target (a bar, a
+// gripper, a bin's rim), shifted sideways so that about `cover` (0..1) of the target's width is
+// hidden. For cameras so high that nothing standing on the table hides the target.
+void PlaceSightOccluder(SceneLayout& layout, double cover, std::mt19937_64& rng);
+
 // A table top around the target's footprint, its edges 0.45..1.2 m from the target's centre.
 void SampleTable(SceneLayout& layout, std::mt19937_64& rng);
 

@@ -62,6 +62,12 @@ void SynthOptions::Validate() const {
           "clutter must be 0..5 (got " + std::to_string(clutter) + ")");
   Require(min_target_visibility >= 0.0 && min_target_visibility <= 1.0,
           "minimum target visibility must be in [0, 1]");
+  Require(max_target_visibility >= min_target_visibility && max_target_visibility <= 1.0,
+          "maximum target visibility must be in [minimum, 1]");
+  Require(instances >= 1 && instances <= 5,
+          "instances must be 1..5 (got " + std::to_string(instances) + ")");
+  Require(absent_fraction >= 0.0 && absent_fraction <= 1.0,
+          "the share of images without the target must be in [0, 1]");
   Require(max_tilt_deg >= 0.0 && max_tilt_deg <= 30.0, "tilt must be 0..30 degrees");
   Require(margin_px >= 0, "margin must not be negative");
   Require(threads >= 0, "threads must not be negative");

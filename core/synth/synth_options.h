@@ -58,7 +58,13 @@ struct SynthOptions {
   // Clutter: 1..clutter other models of models_dir and 1..clutter primitives (0: none).
   int clutter = 3;
   double min_target_visibility = 0.6;  // of the target's silhouette pixels
-  double max_tilt_deg = 3.0;           // objects stand upright, give or take this
+  // Below 1, every image insists on a partly hidden target: clutter is laid out again, and if
+  // nothing standing on the table hides enough (cameras high above), an occluder is placed in
+  // the line of sight.
+  double max_target_visibility = 1.0;
+  int instances = 1;             // copies of the target in each image (1..5), all annotated
+  double absent_fraction = 0.0;  // share of images without the target: clutter only
+  double max_tilt_deg = 3.0;     // objects stand upright, give or take this
   // The models' up axis (geometry/up_axis.h): they stand with it pointing up. Identity: +Z.
   Eigen::Matrix3d upright_from_model = Eigen::Matrix3d::Identity();
   int margin_px = 4;                      // the whole target stays this far inside the image

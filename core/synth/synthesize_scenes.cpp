@@ -87,6 +87,8 @@ fs::path CheckOutputDir(const fs::path& requested) {
 
 struct FrameRecord {
   std::int32_t target_id = 0;
+  bool target_present = true;
+  int instances = 0;  // annotated instances of the target
   double distance_mm = 0.0;
   double visibility = 0.0;
   std::vector<std::int32_t> obj_ids;  // every annotated model
@@ -111,8 +113,9 @@ void WriteModels(const fs::path& models_dir, const SynthContext& context,
 void WriteTargets(const fs::path& path, const std::vector<FrameRecord>& records, int scene_id) {
   nlohmann::ordered_json targets = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < records.size(); ++i) {
+    if (!records[i].target_present) continue;  // BOP lists only objects that are there
     targets.push_back({{"im_id", static_cast<int>(i)},
-                       {"inst_count", 1},
+                       {"inst_count", records[i].instances},
                        {"obj_id", records[i].target_id},
                        {"scene_id", scene_id}});
   }
@@ -125,14 +128,21 @@ SynthSummary Summarise(const fs::path& out_dir, const std::vector<FrameRecord>& 
   summary.images = static_cast<int>(records.size());
   summary.min_distance_mm = summary.min_visibility = std::numeric_limits<double>::max();
   double visibility_sum = 0.0;
+  int present = 0;
   for (const FrameRecord& record : records) {
     ++summary.images_per_target[record.target_id];
+    if (!record.target_present) {
+      ++summary.images_without_target;
+      continue;
+    }
+    ++present;
     summary.min_distance_mm = std::min(summary.min_distance_mm, record.distance_mm);
     summary.max_distance_mm = std::max(summary.max_distance_mm, record.distance_mm);
     summary.min_visibility = std::min(summary.min_visibility, record.visibility);
     visibility_sum += record.visibility;
   }
-  summary.mean_visibility = visibility_sum / std::max<std::size_t>(1, records.size());
+  summary.mean_visibility = visibility_sum / std::max(1, present);
+  if (present == 0) summary.min_visibility = 0.0;
   return summary;
 }
 
@@ -160,10 +170,14 @@ SynthSummary SynthesizeScenes(const SynthOptions& options, const JobControl& job
       const SynthFrame frame = SynthesizeFrame(context, static_cast<int>(i));
       writer.AddFrame(frame.frame);
       FrameRecord& record = records[i];
-      record.target_id = frame.frame.gt.front().obj_id;
+      record.target_id = frame.target_id;
+      record.target_present = frame.target_present;
       record.distance_mm = frame.target_distance_mm;
       record.visibility = frame.target_visibility;
-      for (const BopGroundTruth& gt : frame.frame.gt) record.obj_ids.push_back(gt.obj_id);
+      for (const BopGroundTruth& gt : frame.frame.gt) {
+        record.obj_ids.push_back(gt.obj_id);
+        record.instances += gt.obj_id == frame.target_id;
+      }
       std::lock_guard lock(progress_mutex);
       job.Report(++done, count, "synthesising images");
     });

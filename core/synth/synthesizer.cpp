@@ -2,6 +2,7 @@
 #include "synth/synthesizer.h"
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <set>
 #include <sstream>
@@ -19,6 +20,7 @@ namespace {
 constexpr int kLayoutAttempts = 8;     // clutter layouts tried before occluders are removed
 constexpr int kOcclusionAttempts = 5;  // of those, how many may insist on some occlusion
 constexpr double kOccludedVisibility = 0.95;
+constexpr int kSightOccluderAttempts = 12;
 constexpr int kSceneId = 1;
 
 // The image's own generator: seeded by (seed, index) through seed_seq, whose algorithm the
@@ -43,27 +45,71 @@ std::size_t WorstOccluder(const SceneRender& render) {
   return *worst > 0 ? static_cast<std::size_t>(worst - hidden.begin()) : 0;
 }
 
+SceneRender RenderWithClutter(SceneLayout& layout, const Backdrop& backdrop,
+                              const SceneRender& alone, const PinholeCamera& camera) {
+  SceneRender render;
+  render.item_views.push_back(alone.item_views.front());
+  render.backdrop = alone.backdrop;
+  RenderScene(layout, backdrop, camera, render);
+  return render;
+}
+
+double VisibilityMiss(double visible, const SynthOptions& options) {
+  if (visible > options.max_target_visibility) return visible - options.max_target_visibility;
+  return std::max(0.0, options.min_target_visibility - visible);
+}
+
+// Adds an occluder in the line of sight so that the target is hidden enough (at most
+// max_target_visibility visible, at least min_target_visibility). Tries several; when none lands
+// in the range, the one closest to it (re-placed from the generator state it was drawn with).
+SceneRender OccludeInLineOfSight(SceneLayout& layout, const Backdrop& backdrop,
+                                 const SceneRender& alone, const SynthOptions& options,
+                                 std::mt19937_64& rng) {
+  double best_miss = std::numeric_limits<double>::max();
+  std::mt19937_64 best_state = rng;
+  for (int attempt = 0; attempt < kSightOccluderAttempts; ++attempt) {
+    const std::mt19937_64 state = rng;
+    const double cover = std::uniform_real_distribution<double>(0.1, 0.7)(rng);
+    PlaceSightOccluder(layout, cover, rng);
+    SceneRender render = RenderWithClutter(layout, backdrop, alone, options.camera);
+    const double miss = VisibilityMiss(VisibleFraction(render, 0), options);
+    if (miss == 0.0) return render;
+    layout.items.pop_back();
+    layout.primitives.pop_back();
+    if (miss < best_miss) {
+      best_miss = miss;
+      best_state = state;
+    }
+  }
+  rng = best_state;
+  const double cover = std::uniform_real_distribution<double>(0.1, 0.7)(rng);
+  PlaceSightOccluder(layout, cover, rng);
+  return RenderWithClutter(layout, backdrop, alone, options.camera);
+}
+
 // Places clutter until the target stays visible enough; after kLayoutAttempts layouts, removes
-// the worst occluders of the last one instead. Half of the images also ask for a partly hidden
-// target during the first kOcclusionAttempts layouts (where the camera allows it: from high
-// above, nothing standing on the table hides much). Returns the composited render.
+// the worst occluders of the last one instead. Half of the images (every image when
+// max_target_visibility < 1) also ask for a partly hidden target during the first
+// kOcclusionAttempts layouts (where the camera allows it: from high above, nothing standing on
+// the table hides much; with max_target_visibility < 1 an occluder in the line of sight then
+// does). Returns the composited render.
 SceneRender PlaceVisibleClutter(SceneLayout& layout, const Backdrop& backdrop,
                                 const SynthContext& context, std::mt19937_64& rng) {
   const SynthOptions& options = context.options;
+  const bool insist = options.max_target_visibility < 1.0;
   const bool want_occlusion =
-      options.clutter > 0 && std::uniform_real_distribution<double>(0.0, 1.0)(rng) < 0.5;
+      insist ||
+      (options.clutter > 0 && std::uniform_real_distribution<double>(0.0, 1.0)(rng) < 0.5);
+  const double occluded_visibility = insist ? options.max_target_visibility : kOccludedVisibility;
   SceneRender alone;  // the target and the backdrop, rendered once
   RenderScene(layout, backdrop, options.camera, alone);
   SceneRender render;
   for (int attempt = 0; attempt < kLayoutAttempts; ++attempt) {
     PlaceClutter(layout, context.models, options, rng);
-    render = SceneRender{};
-    render.item_views.push_back(alone.item_views.front());
-    render.backdrop = alone.backdrop;
-    RenderScene(layout, backdrop, options.camera, render);
+    render = RenderWithClutter(layout, backdrop, alone, options.camera);
     const double visible = VisibleFraction(render, 0);
-    const bool occluded_enough =
-        !want_occlusion || attempt >= kOcclusionAttempts || visible <= kOccludedVisibility;
+    const bool occluded_enough = !want_occlusion || (!insist && attempt >= kOcclusionAttempts) ||
+                                 visible <= occluded_visibility;
     if (visible >= options.min_target_visibility && occluded_enough) return render;
   }
   while (VisibleFraction(render, 0) < options.min_target_visibility) {
@@ -73,7 +119,21 @@ SceneRender PlaceVisibleClutter(SceneLayout& layout, const Backdrop& backdrop,
     render.item_views.erase(render.item_views.begin() + static_cast<std::ptrdiff_t>(worst));
     Composite(render);
   }
+  if (insist && VisibleFraction(render, 0) > options.max_target_visibility) {
+    return OccludeInLineOfSight(layout, backdrop, alone, options, rng);
+  }
   return render;
+}
+
+// An image without the target: every instance of it is taken out of the layout and the render.
+void RemoveTarget(SceneLayout& layout, SceneRender& render) {
+  const std::int32_t target_id = layout.items.front().obj_id;
+  for (std::size_t i = layout.items.size(); i-- > 0;) {
+    if (layout.items[i].obj_id != target_id) continue;
+    layout.items.erase(layout.items.begin() + static_cast<std::ptrdiff_t>(i));
+    render.item_views.erase(render.item_views.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  Composite(render);
 }
 
 std::string TooLargeMessage(const SynthModel& model, const SynthOptions& options) {
@@ -99,7 +159,8 @@ void FillGroundTruth(const SceneLayout& layout, const SceneRender& render, Synth
     frame.gt.push_back(gt);
     frame.gt_info.push_back(ItemGtInfo(render, i, frame.depth_mm));
   }
-  result.clutter_models = static_cast<int>(frame.gt.size()) - 1;
+  result.clutter_models = 0;
+  for (const BopGroundTruth& gt : frame.gt) result.clutter_models += gt.obj_id != result.target_id;
 }
 
 }  // namespace
@@ -140,6 +201,10 @@ SynthFrame SynthesizeFrame(const SynthContext& context, int index) {
   const Backdrop backdrop = MakeBackdrop(layout.table_extent, layout.items.front().footprint_centre,
                                          layout.camera.centre_in_world, context.backgrounds, rng);
   SceneRender render = PlaceVisibleClutter(layout, backdrop, context, rng);
+  // Drawn only when asked for, so that sets without absent images stay as they were.
+  const bool absent = options.absent_fraction > 0.0 && std::uniform_real_distribution<double>(
+                                                           0.0, 1.0)(rng) < options.absent_fraction;
+  if (absent) RemoveTarget(layout, render);
   PaintBackdrop(layout, backdrop, render);
 
   SynthFrame result;
@@ -149,11 +214,13 @@ SynthFrame SynthesizeFrame(const SynthContext& context, int index) {
   frame.camera = options.camera;
   frame.depth_mm = ApplyDepthSensorModel(render.depth_mm, options.camera, options.noise, rng);
   frame.color = ApplyColorSensorModel(render.color, options.noise, rng);
+  result.target_id = target_id;
   FillGroundTruth(layout, render, result);
   result.clean_depth_mm = render.depth_mm;
   result.item_index = render.item_index;
   result.target_distance_mm = layout.camera.distance_mm;
-  result.target_visibility = frame.gt_info.front().visib_fract;
+  result.target_present = !absent;
+  result.target_visibility = absent ? 0.0 : frame.gt_info.front().visib_fract;
   return result;
 }
 

@@ -30,11 +30,15 @@ SynthContext PrepareSynthesis(const SynthOptions& options);
 
 // One generated image with what the tests and the summary need beyond the BOP frame.
 struct SynthFrame {
-  BopFrame frame;          // sensor colour and depth; gt[0] is the target, then the clutter models
+  // Sensor colour and depth; gt[0] is the target (unless absent), then further instances of it
+  // and the clutter models.
+  BopFrame frame;
   cv::Mat clean_depth_mm;  // the composited depth before the sensor model
   // CV_16S: which placed item is seen at each pixel (items 0..gt.size()-1 are the annotated
   // models in gt order, higher indices primitives; negative: table or nothing).
   cv::Mat item_index;
+  std::int32_t target_id = 0;
+  bool target_present = true;  // false for the images without it (SynthOptions::absent_fraction)
   double target_distance_mm = 0.0;  // camera centre to the target's sphere centre
   double target_visibility = 0.0;
   int clutter_models = 0;
@@ -52,7 +56,8 @@ struct SynthSummary {
   double min_distance_mm = 0.0;
   double max_distance_mm = 0.0;
   double min_visibility = 0.0;
-  double mean_visibility = 0.0;
+  double mean_visibility = 0.0;  // of the images with the target
+  int images_without_target = 0;
   double seconds = 0.0;
 };
 

@@ -45,9 +45,24 @@ TEST(EvalFramesTest, KeepsVisibleInstancesOfKnownObjects) {
 }
 
 TEST(EvalFramesTest, OnlyObjectsOfTheArchives) {
-  const auto frames = SelectEvalFrames(Scenes(), {2}, {}, "data");
+  FrameSelectionOptions options;
+  options.absent_objects = false;
+  const auto frames = SelectEvalFrames(Scenes(), {2}, options, "data");
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].scene_id, 2);
+}
+
+TEST(EvalFramesTest, ObjectsAFrameDoesNotShowAreJudgedAsAbsent) {
+  // Object 2 in scene 1 image 0 is annotated but hardly visible: neither a target nor absent.
+  // Image 1 does not show it at all; scene 2 image 5 shows it.
+  const auto frames = SelectEvalFrames(Scenes(), {2}, {}, "data");
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].image_id, 1);
+  EXPECT_TRUE(frames[0].targets.empty());
+  EXPECT_EQ(frames[0].absent, std::vector<std::int32_t>{2});
+  EXPECT_EQ(frames[1].scene_id, 2);
+  EXPECT_TRUE(frames[1].absent.empty());
+  ASSERT_EQ(frames[1].targets.size(), 1u);
 }
 
 TEST(EvalFramesTest, SceneTargetsAndFrameLimit) {
@@ -57,6 +72,7 @@ TEST(EvalFramesTest, SceneTargetsAndFrameLimit) {
   options.max_frames = 1;
   EXPECT_EQ(SelectEvalFrames(Scenes(), {1, 2}, options, "data").size(), 1u);
   options = {};
+  options.absent_objects = false;
   options.targets = {{1, 1, 1, 1}, {2, 5, 3, 1}};  // object 3 is in no archive
   const auto frames = SelectEvalFrames(Scenes(), {1, 2}, options, "data");
   ASSERT_EQ(frames.size(), 1u);

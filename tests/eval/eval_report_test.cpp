@@ -89,6 +89,11 @@ TEST(EvalReportTest, WritesBothFilesIntoANewFolder) {
   const nlohmann::json json = nlohmann::json::parse(ReadFileBytes(dir / "out" / "report.json"));
   EXPECT_EQ(json["summary"]["frames"], 2);
   EXPECT_THAT(ReadFileBytes(dir / "out" / "report.md"), HasSubstr("| Object |"));
+  EXPECT_THAT(ReadFileBytes(dir / "out" / "report.md"), HasSubstr("precision-recall curve"));
+  EXPECT_TRUE(json["summary"]["precision_recall"].contains("area"));
+  const std::string plot = ReadFileBytes(dir / "out" / "pr_curve.png");
+  ASSERT_GT(plot.size(), 8u);
+  EXPECT_EQ(plot.substr(1, 3), "PNG");
 }
 
 TEST(EvalReportTest, RefusesAFolderThatCannotBeMade) {

@@ -65,6 +65,39 @@ TEST(EvalSummaryTest, CountsPerObjectAndOverall) {
   EXPECT_DOUBLE_EQ(summary.p90_frame_ms, 37.0);
 }
 
+TEST(EvalSummaryTest, ConfidenceThresholdAndAbsentObjects) {
+  MethodRun run;
+  TargetOutcome right = Outcome(1, true, true, true, true, 10);
+  right.confidence = 0.9;
+  TargetOutcome doubtful_right = Outcome(1, true, true, true, true, 10);
+  doubtful_right.confidence = 0.3;
+  TargetOutcome wrong = Outcome(1, true, false, false, false, 10);
+  wrong.confidence = 0.6;
+  TargetOutcome on_absent = Outcome(2, true, false, false, false, 10);
+  on_absent.present = false;
+  on_absent.confidence = 0.7;
+  TargetOutcome quiet_absent = Outcome(2, false, false, false, false, 10);
+  quiet_absent.present = false;
+  run.outcomes = {right, doubtful_right, wrong, on_absent, quiet_absent};
+  const MethodSummary all = Summarize(run, Models(), 0.0);
+  EXPECT_EQ(all.overall.frames, 3);  // absent pairs are not targets
+  EXPECT_EQ(all.overall.detected, 3);
+  EXPECT_EQ(all.overall.correct, 2);
+  EXPECT_EQ(all.overall.absent, 2);
+  EXPECT_EQ(all.overall.absent_detected, 1);
+  EXPECT_DOUBLE_EQ(all.overall.PrecisionPercent(), 50.0);  // 2 right of 4 accepted
+  EXPECT_DOUBLE_EQ(all.overall.AbsentDetectedPercent(), 50.0);
+  // Object 2 is only ever absent: it has no accuracy and does not pull the mean down.
+  EXPECT_DOUBLE_EQ(all.mean_object_accuracy_percent, all.objects[0].AccuracyPercent());
+
+  const MethodSummary strict = Summarize(run, Models(), 0.8);
+  EXPECT_DOUBLE_EQ(strict.min_confidence, 0.8);
+  EXPECT_EQ(strict.overall.detected, 1);
+  EXPECT_EQ(strict.overall.correct, 1);
+  EXPECT_EQ(strict.overall.absent_detected, 0);
+  EXPECT_DOUBLE_EQ(strict.overall.PrecisionPercent(), 100.0);
+}
+
 TEST(EvalSummaryTest, AnEmptyRunHasZeroRates) {
   const MethodSummary summary = Summarize(MethodRun{}, Models());
   EXPECT_TRUE(summary.objects.empty());

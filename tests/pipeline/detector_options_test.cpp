@@ -66,6 +66,8 @@ TEST(DetectorOptionsTest, BadValuesNameTheField) {
   };
   EXPECT_EQ(read({{"threshold", 120}}), "profile field 'threshold' must lie in [1, 100]");
   EXPECT_EQ(read({{"instances", 1.5}}), "profile field 'instances' must be an integer");
+  EXPECT_EQ(read({{"min_confidence", 1.2}}), "profile field 'min_confidence' must lie in [0, 1]");
+  EXPECT_EQ(read({{"min_confidence", -0.1}}), "profile field 'min_confidence' must lie in [0, 1]");
   EXPECT_EQ(read({{"threshold", "high"}}), "profile field 'threshold' must be a number");
   EXPECT_NE(read({{"mode", "psychic"}}).find("profile field 'mode'"), std::string::npos);
   EXPECT_EQ(read({{"thresold", 70}}), "profile: unknown detector setting 'thresold'");

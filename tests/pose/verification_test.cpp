@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include "pose/pose_test_scene.h"
 
 namespace layermod {
@@ -53,6 +55,48 @@ TEST(VerificationTest, OccludersAreNotCountedAgainstThePose) {
       VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, scene.depth_mm, scene.color);
   EXPECT_GT(result.depth_inlier_ratio, 0.98);  // occluded pixels are neither for nor against
   EXPECT_GT(result.visible_ratio, 0.98);
+}
+
+TEST(VerificationTest, TellsOcclusionFromContradiction) {
+  const Pose truth = test::SamplePose(800.0);
+  test::TestScene occluded = test::RenderTestScene(truth);
+  occluded.depth_mm.setTo(500.0f);  // everything in front of the part: all occluded
+  const Verification in_front = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth,
+                                           occluded.depth_mm, occluded.color);
+  EXPECT_GT(in_front.occluded_ratio, 0.99);
+  EXPECT_LT(in_front.contradicted_ratio, 0.01);
+
+  test::TestScene empty = test::RenderTestScene(truth);
+  empty.depth_mm.setTo(1200.0f);  // only the wall behind: the part is not there
+  const Verification behind =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, empty.depth_mm, empty.color);
+  EXPECT_GT(behind.contradicted_ratio, 0.99);
+  EXPECT_LT(behind.occluded_ratio, 0.01);
+  EXPECT_FALSE(behind.accepted);
+}
+
+TEST(VerificationTest, SurfaceContinuingPastTheOutlineIsMeasured) {
+  // The true pose in front of a far wall: the ring outside the outline sees the wall, not the
+  // part's surface. The same pose "found" on a flat surface at the part's depth: the surface
+  // goes on past the outline all round.
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const Verification isolated =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, scene.depth_mm, scene.color);
+  EXPECT_LT(isolated.surface_continuation, 0.1);
+
+  // The part's own depth carried outwards, ten pixels beyond its outline: a surface that goes
+  // on where the part ends.
+  cv::Mat flat = scene.depth_mm.clone();
+  flat.setTo(0.0f, scene.depth_mm >= 1199.0f);
+  for (int step = 0; step < 10; ++step) {
+    cv::Mat grown;
+    cv::dilate(flat, grown, cv::Mat());
+    grown.copyTo(flat, flat == 0.0f);
+  }
+  const Verification on_surface =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, flat, scene.color);
+  EXPECT_GT(on_surface.surface_continuation, 0.5);
 }
 
 TEST(VerificationTest, ColourDisagreementRejectsASaturatedModel) {

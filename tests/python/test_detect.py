@@ -34,6 +34,7 @@ def test_finds_the_part_near_its_true_pose(detector, scenes, image_id):
     assert best.R.shape == (3, 3) and best.R.dtype == np.float64
     np.testing.assert_allclose(best.R @ best.R.T, np.eye(3), atol=1e-9)
     assert 0 < best.score <= 100 and best.layer_mm > 0
+    assert 0.5 <= best.confidence <= 1.0  # reported: at least the default min_confidence
     assert set(result.timings) == {"prepare_ms", "regions_ms", "coarse_ms", "match_ms",
                                    "pose_ms", "total_ms"}
     assert result.timings["total_ms"] > 0

@@ -79,6 +79,8 @@ def test_bad_options(archive_path):
         layermod.Detector([archive_path], options={"no_such_option": 1})
     with pytest.raises(layermod.FormatError, match="threshold"):
         layermod.Detector([archive_path], options={"threshold": 500})
+    with pytest.raises(layermod.FormatError, match="min_confidence"):
+        layermod.Detector([archive_path], options={"min_confidence": 1.5})
     with pytest.raises(TypeError):
         layermod.Detector([archive_path], options="threshold=70")
 

@@ -135,6 +135,64 @@ TEST_F(SynthFrameTest, TargetsStayInTheEnvelopeAndVisible) {
   }
 }
 
+// Harder sets: targets partly hidden on purpose, several instances, images without the target.
+class HardSynthTest : public ::testing::Test {
+ protected:
+  static SynthContext Context(const test::TempDir& dir, void (*adjust)(SynthOptions&)) {
+    SynthOptions options =
+        test::SmallOptions(test::WriteBracketModels(dir.path()), {1}, 6, dir.path() / "o");
+    adjust(options);
+    return PrepareSynthesis(options);
+  }
+};
+
+TEST_F(HardSynthTest, ImagesWithoutTheTargetShowNoInstanceOfIt) {
+  const test::TempDir dir;
+  const SynthContext context = Context(dir, [](SynthOptions& o) {
+    o.absent_fraction = 1.0;
+    o.instances = 3;
+  });
+  for (int index = 0; index < 4; ++index) {
+    const SynthFrame synth = SynthesizeFrame(context, index);
+    EXPECT_FALSE(synth.target_present);
+    EXPECT_EQ(synth.target_id, 1);
+    for (const BopGroundTruth& gt : synth.frame.gt) EXPECT_NE(gt.obj_id, 1) << "image " << index;
+    EXPECT_EQ(synth.target_visibility, 0.0);
+  }
+}
+
+TEST_F(HardSynthTest, SeveralInstancesOfTheTargetAreAnnotated) {
+  const test::TempDir dir;
+  const SynthContext context = Context(dir, [](SynthOptions& o) { o.instances = 3; });
+  int most = 0;
+  for (int index = 0; index < 4; ++index) {
+    const SynthFrame synth = SynthesizeFrame(context, index);
+    EXPECT_TRUE(synth.target_present);
+    EXPECT_EQ(synth.frame.gt.front().obj_id, 1);
+    int instances = 0;
+    for (const BopGroundTruth& gt : synth.frame.gt) instances += gt.obj_id == 1;
+    EXPECT_LE(instances, 3);
+    most = std::max(most, instances);
+  }
+  EXPECT_GE(most, 2);  // the copies fit around the target at least once
+}
+
+TEST_F(HardSynthTest, TargetsArePartlyHiddenWithinTheRange) {
+  const test::TempDir dir;
+  const SynthContext context = Context(dir, [](SynthOptions& o) {
+    o.min_target_visibility = 0.5;
+    o.max_target_visibility = 0.85;
+    o.elevation_min_deg = 60.0;  // from high above nothing on the table hides much
+  });
+  int within = 0;
+  for (int index = 0; index < 6; ++index) {
+    const double visible = SynthesizeFrame(context, index).target_visibility;
+    EXPECT_GE(visible, 0.45) << "image " << index;
+    within += visible >= 0.5 && visible <= 0.85;
+  }
+  EXPECT_GE(within, 5);
+}
+
 TEST_F(SynthFrameTest, TableDepthNoiseMatchesTheSensorModel) {
   // Residuals of flat table pixels around 1 m, away from every edge.
   const SensorNoiseOptions& noise = bracket_->options.noise;

@@ -13,8 +13,9 @@ namespace layermod::api {
 struct Detection {
   std::int32_t obj_id = 0;
   std::string name;
-  float score = 0.0f;    // LineMOD similarity of the matched template, percent
-  double ranking = 0.0;  // what detections are ordered by: score x depth fit^2 x colour, percent
+  float score = 0.0f;       // LineMOD similarity of the matched template, percent
+  double ranking = 0.0;     // what detections are ordered by: score x depth fit^2 x colour, percent
+  double confidence = 0.0;  // how likely the pose is right, 0..1 (below min_confidence: dropped)
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   Eigen::Vector3d t_mm = Eigen::Vector3d::Zero();
   std::uint32_t template_id = 0;  // the matched template's id in its archive
@@ -26,10 +27,13 @@ struct Detection {
   int icp_iterations = 0;
   double icp_rmse_mm = 0.0;
   double icp_inlier_ratio = 0.0;
-  double depth_inlier_ratio = 0.0;  // silhouette pixels whose depth agrees with the model
-  double depth_fit = 0.0;           // mean closeness of that agreement, 1 = exact
-  double visible_ratio = 0.0;       // silhouette pixels the scene does not contradict
-  double color_agreement = 1.0;     // saturated pixels whose hue matches (1 when not judged)
+  double depth_inlier_ratio = 0.0;    // silhouette pixels whose depth agrees with the model
+  double depth_fit = 0.0;             // mean closeness of that agreement, 1 = exact
+  double visible_ratio = 0.0;         // silhouette pixels the scene does not contradict
+  double occluded_ratio = 0.0;        // measured silhouette pixels with the scene in front
+  double contradicted_ratio = 0.0;    // measured silhouette pixels with the scene behind
+  double surface_continuation = 0.0;  // ring outside the outline where the surface goes on
+  double color_agreement = 1.0;       // saturated pixels whose hue matches (1 when not judged)
 };
 
 // Wall time per stage of one Detect call, in ms, summed over objects. Region division and
