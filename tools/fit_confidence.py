@@ -9,6 +9,10 @@ show), and fits a logistic regression with a small L2 penalty by Newton's method
 coefficients as C++ for confidence.cpp and, per threshold, what accepting confidence >= t gives.
 
     tools/fit_confidence.py eval_a/report.json eval_b/report.json [--no-depth]
+
+With --check nothing is fitted: the table is made from the confidences the reports hold (the
+model in the code), per threshold with the recall over all targets and the share of absent
+pairs (frame, object not in it) with an accepted detection: the check on sets made after a fit.
 """
 
 import argparse
@@ -24,21 +28,36 @@ DEPTH_FREE = ["score", "color_agreement"]
 
 
 def load(paths, label="correct"):
-    rows, labels, present = [], [], []
+    rows, labels, present, stored = [], [], [], []
+    counts = {"targets": 0, "absent": 0}
     for path in paths:
         with open(path) as f:
             report = json.load(f)
         for outcome in report["outcomes"]:
+            is_present = outcome.get("present", True)
+            counts["targets" if is_present else "absent"] += 1
             if not outcome.get("detected"):
                 continue
             features = outcome["features"]
             rows.append([features[name] for name in FEATURES])
-            is_present = outcome.get("present", True)
             labels.append(1.0 if is_present and outcome.get(label, False) else 0.0)
             present.append(is_present)
+            stored.append(outcome.get("confidence", 0.0))
     if not rows:
         sys.exit("no detection with features in " + ", ".join(paths))
-    return np.array(rows), np.array(labels), np.array(present)
+    return np.array(rows), np.array(labels), np.array(present), np.array(stored), counts
+
+
+def print_table(confidence, y, present, counts):
+    print("threshold  accepted  precision  right-kept  recall  absent-accepted")
+    for t in [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9]:
+        accepted = confidence >= t
+        right = (accepted & (y == 1)).sum()
+        precision = right / max(1, accepted.sum())
+        absent = (accepted & ~present).sum()
+        print(f"{t:9.2f}  {accepted.sum():8d}  {precision:9.3f}  {right / max(1, y.sum()):10.3f}"
+              f"  {right / max(1, counts['targets']):6.3f}"
+              f"  {absent:6d} of {counts['absent']} ({100 * absent / max(1, counts['absent']):.1f} %)")
 
 
 def fit(x, y, penalty=1e-2, iterations=50):
@@ -62,26 +81,27 @@ def main():
     parser.add_argument("reports", nargs="+")
     parser.add_argument("--no-depth", action="store_true",
                         help="fit the model for captures without depth (score and colour only)")
+    parser.add_argument("--check", action="store_true",
+                        help="fit nothing: tabulate the confidences stored in the reports")
     args = parser.parse_args()
     # Without depth the distance is only the matched layer's, so what can be known is whether the
     # detection is right in the image: the projected box overlaps the truth's (IoU >= 0.5).
-    x, y, present = load(args.reports, "box_correct" if args.no_depth else "correct")
+    x, y, present, stored, counts = load(args.reports,
+                                         "box_correct" if args.no_depth else "correct")
+    print(f"{len(y)} detections: {int(y.sum())} right, {int((1 - y).sum())} wrong "
+          f"({int((~present).sum())} of them on objects the frame does not show); "
+          f"{counts['targets']} targets, {counts['absent']} absent pairs")
+    if args.check:
+        print_table(stored, y, present, counts)
+        return
     used = DEPTH_FREE if args.no_depth else FEATURES
     columns = [FEATURES.index(name) for name in used]
     w = fit(x[:, columns], y)
     weights = np.zeros(len(FEATURES))
     weights[columns] = w[1:]
     confidence = 1.0 / (1.0 + np.exp(-(w[0] + x @ weights)))
-    print(f"{len(y)} detections: {int(y.sum())} right, {int((1 - y).sum())} wrong "
-          f"({int((~present).sum())} of them on objects the frame does not show)")
     print("C++: {%.4f, {%s}}" % (w[0], ", ".join("%.4f" % v for v in weights)))
-    print("threshold  accepted  precision  right-kept  absent-accepted")
-    for t in [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9]:
-        accepted = confidence >= t
-        right = (accepted & (y == 1)).sum()
-        precision = right / max(1, accepted.sum())
-        print(f"{t:9.2f}  {accepted.sum():8d}  {precision:9.3f}  {right / max(1, y.sum()):10.3f}"
-              f"  {(accepted & ~present).sum():15d}")
+    print_table(confidence, y, present, counts)
 
 
 if __name__ == "__main__":

@@ -24,8 +24,8 @@ QString RotationText(const Eigen::Matrix3d& rotation) {
 }  // namespace
 
 QStringList DetectionColumnTitles() {
-  return {QObject::tr("Object"),        QObject::tr("Confidence"), QObject::tr("Score"),
-          QObject::tr("Layer"),         QObject::tr("Position (mm)"), QObject::tr("Rotation"),
+  return {QObject::tr("Object"), QObject::tr("Confidence"),    QObject::tr("Score"),
+          QObject::tr("Layer"),  QObject::tr("Position (mm)"), QObject::tr("Rotation"),
           QObject::tr("ICP")};
 }
 

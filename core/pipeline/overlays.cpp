@@ -142,7 +142,8 @@ cv::Mat DrawPoses(const cv::Mat& color, const std::vector<Detection>& detections
     DrawAxes(canvas, detection.cam_from_model, object.sphere.centre, object.sphere.radius * 0.8,
              camera);
     char text[96];
-    std::snprintf(text, sizeof(text), "%s %.1f%%", detection.name.c_str(), detection.score);
+    std::snprintf(text, sizeof(text), "%s %.1f%% conf %.2f", detection.name.c_str(),
+                  detection.score, detection.confidence);
     const Eigen::Vector2d label_at =
         camera.Project(detection.cam_from_model * object.sphere.centre);
     DrawLabel(canvas, text, cv::Point2d(label_at.x(), label_at.y()) + cv::Point2d(8, -8),

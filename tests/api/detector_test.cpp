@@ -13,6 +13,7 @@
 namespace layermod::api {
 namespace {
 
+using test::kSampleDetectorOptions;
 using test::Sample;
 
 // Throws what `detector.Detect(capture)` throws and returns its message ("" if nothing).
@@ -26,7 +27,7 @@ std::string DetectError(const Detector& detector, const Capture& capture) {
 }
 
 TEST(ApiDetectorTest, FindsThePartNearItsTruePose) {
-  const Detector detector({Sample().archive});
+  const Detector detector({Sample().archive}, kSampleDetectorOptions);
   for (const test::SampleFrame& frame : Sample().frames) {
     const DetectionResult result = detector.Detect(frame.capture);
     ASSERT_FALSE(result.detections.empty());
@@ -43,7 +44,7 @@ TEST(ApiDetectorTest, FindsThePartNearItsTruePose) {
 // Detect is const and only reads the detector: two threads on one detector give exactly the
 // results one thread gives.
 TEST(ApiDetectorTest, OneDetectorServesTwoThreads) {
-  const Detector detector({Sample().archive});
+  const Detector detector({Sample().archive}, kSampleDetectorOptions);
   std::vector<Eigen::Vector3d> alone;
   for (const test::SampleFrame& frame : Sample().frames) {
     alone.push_back(detector.Detect(frame.capture).detections.at(0).t_mm);
@@ -69,7 +70,7 @@ TEST(ApiDetectorTest, OneDetectorServesTwoThreads) {
 }
 
 TEST(ApiDetectorTest, SixteenBitDepthEqualsFloatDepth) {
-  const Detector detector({Sample().archive});
+  const Detector detector({Sample().archive}, kSampleDetectorOptions);
   Capture as_float = Sample().frames[1].capture;
   Capture as_u16 = as_float;
   as_float.depth.convertTo(as_u16.depth, CV_16U, 10.0);  // 0.1 mm steps
@@ -82,7 +83,7 @@ TEST(ApiDetectorTest, SixteenBitDepthEqualsFloatDepth) {
 }
 
 TEST(ApiDetectorTest, NanAndNegativeDepthCountAsNoMeasurement) {
-  const Detector detector({Sample().archive});
+  const Detector detector({Sample().archive}, kSampleDetectorOptions);
   Capture capture = Sample().frames[0].capture;
   capture.depth = capture.depth.clone();
   capture.depth(cv::Rect(0, 0, 40, 40)).setTo(std::numeric_limits<float>::quiet_NaN());
@@ -93,12 +94,14 @@ TEST(ApiDetectorTest, NanAndNegativeDepthCountAsNoMeasurement) {
   EXPECT_LT((result.detections[0].t_mm - Sample().frames[0].true_t_mm).norm(), 15.0);
 }
 
+// Confidence is left out (0): the counts below are about the LineMOD threshold alone.
 TEST(ApiDetectorTest, OptionsUseTheCliNames) {
-  const Detector detector({Sample().archive}, R"({"threshold": 99.5, "instances": 2})");
+  const Detector detector({Sample().archive},
+                          R"({"threshold": 99.5, "instances": 2, "min_confidence": 0})");
   const auto options = nlohmann::json::parse(detector.OptionsJson());
   EXPECT_EQ(options["threshold"], 99.5);
   EXPECT_EQ(options["instances"], 2);
-  const Detector loose = detector.WithOptions(R"({"threshold": 70})");
+  const Detector loose = detector.WithOptions(R"({"threshold": 70, "min_confidence": 0})");
   EXPECT_EQ(loose.archives().size(), 1u);
   EXPECT_LT(detector.Detect(Sample().frames[0].capture).detections.size(),
             loose.Detect(Sample().frames[0].capture).detections.size());
@@ -110,7 +113,7 @@ TEST(ApiDetectorTest, OptionsUseTheCliNames) {
 }
 
 TEST(ApiDetectorTest, UnusableCapturesThrowNamingTheProblem) {
-  const Detector detector({Sample().archive});
+  const Detector detector({Sample().archive}, kSampleDetectorOptions);
   const Capture good = Sample().frames[0].capture;
   Capture capture = good;
   capture.color_bgr.convertTo(capture.color_bgr, CV_32FC3);
@@ -134,7 +137,7 @@ TEST(ApiDetectorTest, UnusableCapturesThrowNamingTheProblem) {
 }
 
 TEST(ApiDetectorTest, JsonIsTheCliFormat) {
-  const Detector detector({Sample().archive});
+  const Detector detector({Sample().archive}, kSampleDetectorOptions);
   const DetectionResult result = detector.Detect(Sample().frames[0].capture);
   ASSERT_FALSE(result.detections.empty());
   const auto json = nlohmann::json::parse(ToJson(result));
