@@ -9,12 +9,12 @@ namespace {
 
 // Logistic regression: confidence = 1 / (1 + exp(-(bias + sum w_i x_i))), features in the order
 // of ConfidenceFeatures::Names(). Fitted by tools/fit_confidence.py on the outcomes of three
-// calibration sets (docs/RESULTS.md, "Confidence": the 8 LineMOD objects on harder and on tabletop
-// scenes, the bundled bracket): 1607 detections, 598 right, 1009 wrong (877 of them of parts the
+// scene sets (docs/RESULTS.md, "Confidence": the 8 LineMOD objects on harder and on tabletop
+// scenes, the bundled bracket): 1443 detections, 543 right, 900 wrong (776 of them of parts the
 // frame does not show).
 //
-//   tools/fit_confidence.py cal_hard_eval/report.json cal_table_eval/report.json
-//       cal_bracket_eval/report.json   (one command line)
+//   tools/fit_confidence.py val_hard_eval/report.json val_table_eval/report.json
+//       bracket_val_eval/report.json   (one command line)
 //   tools/fit_confidence.py --no-depth cal_table_rgb_eval/report.json
 struct LogisticModel {
   double bias;
@@ -22,8 +22,8 @@ struct LogisticModel {
 };
 
 constexpr LogisticModel kWithDepth{
-    -3.8220,
-    {20.1384, 12.8383, 3.6684, -19.8822, -10.3504, -18.0161, -4.5037, -0.9439, -1.0682, -17.0066}};
+    -3.1700,
+    {19.3221, 15.7024, 2.3312, -27.8429, -5.7732, -23.3557, -2.9403, 2.6830, 0.2417, -11.0556}};
 // Without depth the distance is only the matched layer's: the confidence is that the detection is
 // right in the image (projected box IoU >= 0.5 with the truth), fitted on colour-only runs.
 constexpr LogisticModel kWithoutDepth{-12.1041, {9.4217, 0, 0, 0, 0, 0, 0, 2.4283, 0, 0}};

@@ -27,7 +27,7 @@ struct ApiSample {
 const ApiSample& Sample();
 
 // The sample archive is coarse for speed (20 degree views): its right poses fit the depth less
-// closely than a default archive's and verify at confidences from about 0.5, below the default
+// closely than a default archive's and verify at confidences from about 0.75, below the default
 // acceptance of 0.8.
 inline constexpr char kSampleDetectorOptions[] = R"({"min_confidence": 0.5})";
 

@@ -18,7 +18,7 @@ PROFILE = {"depth_min_mm": 600, "depth_max_mm": 900,
            "views": {"even_spacing_deg": 20, "roll": {"min_deg": -30, "step_deg": 15,
                                                       "max_deg": 30}}}
 # That archive is coarse for speed: its right poses fit the depth less closely than a default
-# archive's and verify at confidences from about 0.5, below the default acceptance of 0.8.
+# archive's and verify at confidences from about 0.75, below the default acceptance of 0.8.
 DETECTOR_OPTIONS = {"min_confidence": 0.5}
 
 
