@@ -38,7 +38,7 @@ void RunEval(const EvalArgs& args) {
   std::printf("mean accuracy over objects %.1f %%; time per frame median %.1f ms, p90 %.1f ms\n",
               evaluation.summary.mean_object_accuracy_percent, evaluation.summary.median_frame_ms,
               evaluation.summary.p90_frame_ms);
-  std::printf("%s", ConfidenceText(evaluation.summary, evaluation.run).c_str());
+  std::printf("%s", ConfidenceText(evaluation.summary).c_str());
   std::printf("%s", EnvelopeCoverageText(evaluation.summary, evaluation.run).c_str());
   std::printf("report        %s\n", (fs::path(args.out) / "report.md").string().c_str());
 }

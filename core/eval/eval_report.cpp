@@ -89,13 +89,13 @@ nlohmann::json ObjectSummariesJson(const MethodSummary& summary) {
   return objects;
 }
 
-nlohmann::json SummaryJson(const MethodSummary& summary, const MethodRun& run) {
+nlohmann::json SummaryJson(const MethodSummary& summary) {
   const nlohmann::json objects = ObjectSummariesJson(summary);
   nlohmann::json overall = ObjectJson(summary.overall);
   overall.erase("obj_id");
   overall.erase("metric");
   overall.erase("diameter_mm");
-  const PrecisionRecallCurve curve = ComputePrecisionRecall(run.outcomes);
+  const PrecisionRecallCurve& curve = summary.precision_recall;
   nlohmann::json points = nlohmann::json::array();
   for (const PrecisionRecallPoint& point : curve.points) {
     points.push_back({point.threshold, point.precision, point.recall});
@@ -152,7 +152,7 @@ nlohmann::json EvalReportJson(const EvalRunInfo& info, const MethodSummary& summ
   return {{"tool_version", ToolVersion()},
           {"created_utc", UtcTimestamp()},
           {"setup", RunInfoJson(info)},
-          {"summary", SummaryJson(summary, run)},
+          {"summary", SummaryJson(summary)},
           {"outcomes", OutcomesJson(run)}};
 }
 
@@ -184,9 +184,8 @@ std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& 
   return text;
 }
 
-std::string ConfidenceText(const MethodSummary& summary, const MethodRun& run) {
+std::string ConfidenceText(const MethodSummary& summary) {
   const ObjectSummary& all = summary.overall;
-  const PrecisionRecallCurve curve = ComputePrecisionRecall(run.outcomes);
   std::string text = "Detections accepted at confidence >= " + Fixed(summary.min_confidence, 2) +
                      ": precision " + Fixed(all.PrecisionPercent(), 1) + " %, recall " +
                      Fixed(all.AccuracyPercent(), 1) + " %";
@@ -195,8 +194,8 @@ std::string ConfidenceText(const MethodSummary& summary, const MethodRun& run) {
             " of " + std::to_string(all.absent) + " cases (" +
             Fixed(all.AbsentDetectedPercent(), 1) + " %)";
   }
-  text +=
-      ". Area under the precision-recall curve: " + Fixed(curve.area, 3) + " (`pr_curve.png`).\n";
+  text += ". Area under the precision-recall curve: " + Fixed(summary.precision_recall.area, 3) +
+          " (`pr_curve.png`).\n";
   return text;
 }
 
@@ -223,7 +222,7 @@ std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& sum
           " %. Time per frame: mean " + Fixed(summary.mean_frame_ms, 1) + " ms, median " +
           Fixed(summary.median_frame_ms, 1) + " ms, p90 " + Fixed(summary.p90_frame_ms, 1) +
           " ms.\n";
-  text += "\n" + ConfidenceText(summary, run);
+  text += "\n" + ConfidenceText(summary);
   const std::string coverage = EnvelopeCoverageText(summary, run);
   if (!coverage.empty()) text += "\n" + coverage;
   return text;
@@ -245,9 +244,9 @@ void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& in
   if (ec) throw IoError(Quoted(out_dir) + ": cannot create the folder (" + ec.message() + ")");
   WriteFileAtomically(out_dir / "report.json", EvalReportJson(info, summary, run).dump(2) + "\n");
   WriteFileAtomically(out_dir / "report.md", EvalReportMarkdown(info, summary, run));
-  WritePngAtomically(out_dir / "pr_curve.png",
-                     DrawPrecisionRecall(ComputePrecisionRecall(run.outcomes),
-                                         PointAt(run.outcomes, summary.min_confidence)));
+  WritePngAtomically(
+      out_dir / "pr_curve.png",
+      DrawPrecisionRecall(summary.precision_recall, PointAt(run.outcomes, summary.min_confidence)));
 }
 
 }  // namespace layermod

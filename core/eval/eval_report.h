@@ -32,8 +32,8 @@ std::string UtcTimestamp();
 
 nlohmann::json RunInfoJson(const EvalRunInfo& info);
 nlohmann::json ObjectSummariesJson(const MethodSummary& summary);  // one entry per object
-// With the precision-recall curve of `run`.
-nlohmann::json SummaryJson(const MethodSummary& summary, const MethodRun& run);
+// With the precision-recall curve over every threshold.
+nlohmann::json SummaryJson(const MethodSummary& summary);
 nlohmann::json OutcomesJson(const MethodRun& run);
 
 // {tool_version, created_utc, setup, summary, outcomes}.
@@ -55,7 +55,7 @@ void CheckReportFolder(const std::filesystem::path& out_dir);
 
 // Precision and recall at the run's threshold, false detections of absent objects, the area
 // under the precision-recall curve.
-std::string ConfidenceText(const MethodSummary& summary, const MethodRun& run);
+std::string ConfidenceText(const MethodSummary& summary);
 
 // Creates `out_dir` if needed and writes report.json, report.md and pr_curve.png atomically. Throws
 // IoError.

@@ -36,6 +36,15 @@ PoseScore ClosestInstanceScore(const EvalTarget& target, const BopFrame& image,
   return best;
 }
 
+TargetOutcome FrameOutcome(const EvalFrame& frame, std::int32_t obj_id, double frame_time_ms) {
+  TargetOutcome outcome;
+  outcome.scene_id = frame.scene_id;
+  outcome.image_id = frame.image_id;
+  outcome.obj_id = obj_id;
+  outcome.frame_time_ms = frame_time_ms;
+  return outcome;
+}
+
 void NoteDetection(const Detection& detection, TargetOutcome& outcome) {
   outcome.detected = true;
   outcome.score = detection.score;
@@ -58,11 +67,7 @@ std::vector<TargetOutcome> ScoreFrame(const EvalFrame& frame, const BopFrame& im
                                       const EvalMetricOptions& options, double frame_time_ms) {
   std::vector<TargetOutcome> outcomes;
   for (const EvalTarget& target : frame.targets) {
-    TargetOutcome outcome;
-    outcome.scene_id = frame.scene_id;
-    outcome.image_id = frame.image_id;
-    outcome.obj_id = target.obj_id;
-    outcome.frame_time_ms = frame_time_ms;
+    TargetOutcome outcome = FrameOutcome(frame, target.obj_id, frame_time_ms);
     const EvalModel& model = ModelOf(models, target.obj_id);
     if (const Detection* detection = BestDetectionOf(detections, target.obj_id)) {
       NoteDetection(*detection, outcome);
@@ -71,12 +76,8 @@ std::vector<TargetOutcome> ScoreFrame(const EvalFrame& frame, const BopFrame& im
     outcomes.push_back(outcome);
   }
   for (const std::int32_t obj_id : frame.absent) {
-    TargetOutcome outcome;
-    outcome.scene_id = frame.scene_id;
-    outcome.image_id = frame.image_id;
-    outcome.obj_id = obj_id;
+    TargetOutcome outcome = FrameOutcome(frame, obj_id, frame_time_ms);
     outcome.present = false;
-    outcome.frame_time_ms = frame_time_ms;
     if (const Detection* detection = BestDetectionOf(detections, obj_id)) {
       NoteDetection(*detection, outcome);
     }

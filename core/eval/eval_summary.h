@@ -10,6 +10,7 @@
 
 #include "eval/eval_model.h"
 #include "eval/eval_runner.h"
+#include "eval/precision_recall.h"
 
 namespace layermod {
 
@@ -56,6 +57,7 @@ struct MethodSummary {
   double mean_frame_ms = 0.0;
   double median_frame_ms = 0.0;
   double p90_frame_ms = 0.0;
+  PrecisionRecallCurve precision_recall;  // over every threshold, from the run's outcomes
 };
 
 // The `fraction` quantile (0..1) with linear interpolation between ranks; 0 for no values.

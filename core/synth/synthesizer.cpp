@@ -59,6 +59,11 @@ double VisibilityMiss(double visible, const SynthOptions& options) {
   return std::max(0.0, options.min_target_visibility - visible);
 }
 
+void PlaceRandomSightOccluder(SceneLayout& layout, std::mt19937_64& rng) {
+  const double cover = std::uniform_real_distribution<double>(0.1, 0.7)(rng);
+  PlaceSightOccluder(layout, cover, rng);
+}
+
 // Adds an occluder in the line of sight so that the target is hidden enough (at most
 // max_target_visibility visible, at least min_target_visibility). Tries several; when none lands
 // in the range, the one closest to it (re-placed from the generator state it was drawn with).
@@ -69,8 +74,7 @@ SceneRender OccludeInLineOfSight(SceneLayout& layout, const Backdrop& backdrop,
   std::mt19937_64 best_state = rng;
   for (int attempt = 0; attempt < kSightOccluderAttempts; ++attempt) {
     const std::mt19937_64 state = rng;
-    const double cover = std::uniform_real_distribution<double>(0.1, 0.7)(rng);
-    PlaceSightOccluder(layout, cover, rng);
+    PlaceRandomSightOccluder(layout, rng);
     SceneRender render = RenderWithClutter(layout, backdrop, alone, options.camera);
     const double miss = VisibilityMiss(VisibleFraction(render, 0), options);
     if (miss == 0.0) return render;
@@ -82,8 +86,7 @@ SceneRender OccludeInLineOfSight(SceneLayout& layout, const Backdrop& backdrop,
     }
   }
   rng = best_state;
-  const double cover = std::uniform_real_distribution<double>(0.1, 0.7)(rng);
-  PlaceSightOccluder(layout, cover, rng);
+  PlaceRandomSightOccluder(layout, rng);
   return RenderWithClutter(layout, backdrop, alone, options.camera);
 }
 
