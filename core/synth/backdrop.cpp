@@ -5,15 +5,13 @@
 #include <cmath>
 #include <limits>
 
+#include "synth/random_draws.h"
+
 namespace layermod {
 namespace {
 
 constexpr double kRoomHalfSizeMm = 8000.0;
 constexpr double kWallHeightMm = 2500.0;
-
-double Uniform(std::mt19937_64& rng, double low, double high) {
-  return std::uniform_real_distribution<double>(low, high)(rng);
-}
 
 BackdropPlane Floor(std::mt19937_64& rng) {
   BackdropPlane floor;

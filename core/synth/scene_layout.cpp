@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "synth/primitives.h"
+#include "synth/random_draws.h"
 
 namespace layermod {
 namespace {
@@ -17,14 +18,6 @@ constexpr int kPlacementTries = 25;  // positions per clutter item
 constexpr double kFootprintGapMm = 5.0;
 constexpr double kCameraClearanceMm = 60.0;
 constexpr double kOccluderProbability = 0.5;
-
-double Uniform(std::mt19937_64& rng, double low, double high) {
-  return std::uniform_real_distribution<double>(low, high)(rng);
-}
-
-int UniformInt(std::mt19937_64& rng, int low, int high) {
-  return std::uniform_int_distribution<int>(low, high)(rng);
-}
 
 Eigen::Vector3d DirectionFrom(double azimuth_rad, double elevation_rad) {
   return {std::cos(elevation_rad) * std::cos(azimuth_rad),
@@ -64,14 +57,15 @@ RenderMesh RandomPrimitive(bool occluder, std::mt19937_64& rng) {
     }
   }
   if (Uniform(rng, 0.0, 1.0) < 0.6) {
-    const Eigen::Vector3f size(static_cast<float>(Uniform(rng, 30.0, 140.0)),
-                               static_cast<float>(Uniform(rng, 30.0, 140.0)),
-                               static_cast<float>(Uniform(rng, min_height, 200.0)));
-    return MakeBoxMesh(size, color);
+    // One draw per statement (synth/random_draws.h).
+    const auto height = static_cast<float>(Uniform(rng, min_height, 200.0));
+    const auto depth = static_cast<float>(Uniform(rng, 30.0, 140.0));
+    const auto width = static_cast<float>(Uniform(rng, 30.0, 140.0));
+    return MakeBoxMesh(Eigen::Vector3f(width, depth, height), color);
   }
-  return MakeCylinderMesh(static_cast<float>(Uniform(rng, 15.0, 60.0)),
-                          static_cast<float>(Uniform(rng, std::max(40.0, min_height), 200.0)), 32,
-                          color);
+  const auto height = static_cast<float>(Uniform(rng, std::max(40.0, min_height), 200.0));
+  const auto radius = static_cast<float>(Uniform(rng, 15.0, 60.0));
+  return MakeCylinderMesh(radius, height, 32, color);
 }
 
 Sphere PrimitiveSphere(const RenderMesh& mesh) {
@@ -113,9 +107,10 @@ Eigen::Vector2d ClutterPosition(const SceneLayout& layout, double item_radius, b
   const Eigen::Vector2d along = to_camera / camera_range;
   const Eigen::Vector2d across(-along.y(), along.x());
   const double side = Uniform(rng, 0.0, 1.0) < 0.5 ? -1.0 : 1.0;
-  return target.footprint_centre +
-         Uniform(rng, touching, std::min(farthest, touching + 80.0)) * along +
-         side * Uniform(rng, 0.2, 0.9) * (target.footprint_radius_mm + item_radius) * across;
+  const double offset = side * Uniform(rng, 0.2, 0.9);
+  const double distance_mm = Uniform(rng, touching, std::min(farthest, touching + 80.0));
+  return target.footprint_centre + distance_mm * along +
+         offset * (target.footprint_radius_mm + item_radius) * across;
 }
 
 // Tries positions around the target for a mesh; the item, or nullopt when every try collided.
@@ -227,10 +222,11 @@ std::optional<CameraSample> SampleCamera(const PlacedItem& target, const Pinhole
                                                                  DegToRad(sample.elevation_deg));
     for (int aim = 0; aim < kPixelTries; ++aim) {
       // The last try aims at the principal point, where an object that fits at all fits best.
-      const Eigen::Vector2d pixel =
-          aim + 1 < kPixelTries ? Eigen::Vector2d(Uniform(rng, margin, camera.width - 1 - margin),
-                                                  Uniform(rng, margin, camera.height - 1 - margin))
-                                : Eigen::Vector2d(camera.cx, camera.cy);
+      Eigen::Vector2d pixel(camera.cx, camera.cy);
+      if (aim + 1 < kPixelTries) {
+        pixel.y() = Uniform(rng, margin, camera.height - 1 - margin);  // y first: random_draws.h
+        pixel.x() = Uniform(rng, margin, camera.width - 1 - margin);
+      }
       sample.cam_from_world = LookAtFrom(target.bound.centre, sample.centre_in_world,
                                          DegToRad(sample.roll_deg), camera, pixel);
       if (InsideImage(*target.mesh, sample.cam_from_world * target.world_from_item, camera,
@@ -317,8 +313,8 @@ void PlaceSightOccluder(SceneLayout& layout, double cover, std::mt19937_64& rng)
 
 void SampleTable(SceneLayout& layout, std::mt19937_64& rng) {
   const Eigen::Vector2d centre = layout.items.front().footprint_centre;
-  const Eigen::Vector2d low(Uniform(rng, 450.0, 1200.0), Uniform(rng, 450.0, 1200.0));
-  const Eigen::Vector2d high(Uniform(rng, 450.0, 1200.0), Uniform(rng, 450.0, 1200.0));
+  const Eigen::Vector2d low = UniformVector2(rng, 450.0, 1200.0);
+  const Eigen::Vector2d high = UniformVector2(rng, 450.0, 1200.0);
   layout.table_extent = Eigen::AlignedBox2d(centre - low, centre + high);
 }
 

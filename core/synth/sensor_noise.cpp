@@ -4,14 +4,12 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "synth/random_draws.h"
+
 namespace layermod {
 namespace {
 
 constexpr int kDropPatchPx = 2;  // edge dropouts come in patches, not single pixels
-
-int UniformInt(std::mt19937_64& rng, int low, int high) {
-  return std::uniform_int_distribution<int>(low, high)(rng);
-}
 
 // Pixels next to missing depth or to a jump larger than `jump_at_1m_mm` scaled by the depth
 // (a pixel's footprint grows with depth, so the same slant gives a jump proportional to it).
@@ -59,10 +57,13 @@ void AddHoles(cv::Mat& depth_mm, const SensorNoiseOptions& options, std::mt19937
   if (options.holes_max == 0) return;
   const int count = UniformInt(rng, 1, options.holes_max);
   for (int i = 0; i < count; ++i) {
-    const cv::Point centre(UniformInt(rng, 0, depth_mm.cols - 1),
-                           UniformInt(rng, 0, depth_mm.rows - 1));
-    const cv::Size axes(UniformInt(rng, 1, options.hole_radius_max_px),
-                        UniformInt(rng, 1, options.hole_radius_max_px));
+    // One draw per statement (synth/random_draws.h).
+    const int centre_y = UniformInt(rng, 0, depth_mm.rows - 1);
+    const int centre_x = UniformInt(rng, 0, depth_mm.cols - 1);
+    const int axis_y = UniformInt(rng, 1, options.hole_radius_max_px);
+    const int axis_x = UniformInt(rng, 1, options.hole_radius_max_px);
+    const cv::Point centre(centre_x, centre_y);
+    const cv::Size axes(axis_x, axis_y);
     cv::ellipse(depth_mm, centre, axes, UniformInt(rng, 0, 179), 0, 360, cv::Scalar(0.0),
                 cv::FILLED);
   }

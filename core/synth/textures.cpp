@@ -9,6 +9,7 @@
 
 #include "dataset/bop_images.h"
 #include "geometry/pose.h"
+#include "synth/random_draws.h"
 #include "util/error.h"
 #include "util/file_names.h"
 
@@ -17,10 +18,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMipLevels = 7;  // 512 .. 8 texels
-
-double Uniform(std::mt19937_64& rng, double low, double high) {
-  return std::uniform_real_distribution<double>(low, high)(rng);
-}
 
 bool IsImageFile(const fs::path& path) {
   const std::string extension = LowercaseExtension(path);
@@ -36,23 +33,30 @@ cv::Mat SmoothNoise(int cells, cv::RNG& cv_rng) {
   return large;
 }
 
+// A BGR offset with each channel uniform in its range, drawn last channel first (one draw per
+// statement, synth/random_draws.h).
+cv::Scalar UniformTint(std::mt19937_64& rng, std::pair<double, double> blue,
+                       std::pair<double, double> green, std::pair<double, double> red) {
+  const double r = Uniform(rng, red.first, red.second);
+  const double g = Uniform(rng, green.first, green.second);
+  const double b = Uniform(rng, blue.first, blue.second);
+  return {b, g, r};
+}
+
 // Base grey level and tint (BGR offsets) of a surface kind.
 void BaseColour(SurfaceKind kind, std::mt19937_64& rng, double& grey, cv::Scalar& tint) {
   switch (kind) {
     case SurfaceKind::kTable:
       grey = Uniform(rng, 80.0, 200.0);
-      tint = cv::Scalar(Uniform(rng, -30.0, 15.0), Uniform(rng, -10.0, 10.0),
-                        Uniform(rng, -15.0, 35.0));
+      tint = UniformTint(rng, {-30.0, 15.0}, {-10.0, 10.0}, {-15.0, 35.0});
       break;
     case SurfaceKind::kFloor:
       grey = Uniform(rng, 40.0, 110.0);
-      tint =
-          cv::Scalar(Uniform(rng, -15.0, 10.0), Uniform(rng, -5.0, 5.0), Uniform(rng, -10.0, 20.0));
+      tint = UniformTint(rng, {-15.0, 10.0}, {-5.0, 5.0}, {-10.0, 20.0});
       break;
     case SurfaceKind::kWall:
       grey = Uniform(rng, 150.0, 225.0);
-      tint =
-          cv::Scalar(Uniform(rng, -15.0, 5.0), Uniform(rng, -5.0, 5.0), Uniform(rng, -5.0, 15.0));
+      tint = UniformTint(rng, {-15.0, 5.0}, {-5.0, 5.0}, {-5.0, 15.0});
       break;
   }
 }
@@ -196,8 +200,11 @@ cv::Mat MakeProceduralTexture(SurfaceKind kind, std::mt19937_64& rng) {
   cv::Scalar tint;
   BaseColour(kind, rng, grey, tint);
   const double contrast = kind == SurfaceKind::kWall ? 0.4 : 1.0;
-  cv::Mat shade = SmoothNoise(5, cv_rng) * (contrast * Uniform(rng, 5.0, 14.0)) +
-                  SmoothNoise(40, cv_rng) * (contrast * Uniform(rng, 2.0, 5.0));
+  const double broad_gain = contrast * Uniform(rng, 2.0, 5.0);
+  const cv::Mat broad = SmoothNoise(40, cv_rng);
+  const double coarse_gain = contrast * Uniform(rng, 5.0, 14.0);
+  const cv::Mat coarse = SmoothNoise(5, cv_rng);
+  cv::Mat shade = coarse * coarse_gain + broad * broad_gain;
   cv::Mat fine(kTextureSize, kTextureSize, CV_32F);
   cv_rng.fill(fine, cv::RNG::NORMAL, 0.0, Uniform(rng, 1.0, 4.0));
   shade += fine;
