@@ -33,13 +33,13 @@ LoadedCapture LoadCaptureSource(const CaptureSource& source) {
     const BopScene scene = FindScene(source.bop_dir.toStdString(), source.scene_id);
     BopFrame frame = LoadBopFrame(scene, source.frame_id);
     return {Capture{std::move(frame.color), std::move(frame.depth_mm), frame.camera},
-            scene.image_ids};
+            scene.image_ids, std::move(frame.gt)};
   }
   CaptureFiles files;
   files.color = source.color.toStdString();
   files.depth = source.depth.toStdString();
   files.camera = source.camera.toStdString();
-  return {LoadCapture(files), {}};
+  return {LoadCapture(files), {}, {}};
 }
 
 int NeighbourFrame(const std::vector<int>& frame_ids, int frame_id, int step) {

@@ -4,6 +4,7 @@
 #include <QString>
 #include <vector>
 
+#include "dataset/bop.h"
 #include "pipeline/detector.h"
 
 namespace layermod::ui {
@@ -25,7 +26,8 @@ struct CaptureSource {
 
 struct LoadedCapture {
   Capture capture;
-  std::vector<int> scene_frame_ids;  // a BOP frame's scene: its image ids, ascending
+  std::vector<int> scene_frame_ids;          // a BOP frame's scene: its image ids, ascending
+  std::vector<BopGroundTruth> ground_truth;  // a BOP frame's, when the dataset has it
 };
 
 // Reads the frame (runs on the worker thread). Throws the core's IoError/FormatError naming the

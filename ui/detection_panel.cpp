@@ -24,6 +24,7 @@
 #include "ui/capture_dialog.h"
 #include "ui/detection_options_form.h"
 #include "ui/detection_table.h"
+#include "ui/ground_truth_text.h"
 #include "ui/image_convert.h"
 #include "ui/image_view.h"
 #include "ui/job_runner.h"
@@ -65,6 +66,7 @@ DetectionPanel::DetectionPanel(StudioSession* session, JobRunner* runner, QWidge
       frame_(new QSpinBox),
       capture_label_(new QLabel(tr("No capture"))),
       archive_label_(new QLabel),
+      coverage_label_(new QLabel),
       options_(new DetectionOptionsForm),
       detect_on_load_(new QCheckBox(tr("Detect on load"))),
       detect_(new QPushButton(tr("Detect"))),
@@ -184,8 +186,16 @@ QWidget* DetectionPanel::BuildDetectBox() {
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(open_archive);
   buttons->addWidget(detect_);
+  coverage_label_->setObjectName("groundTruthLabel");
+  coverage_label_->setWordWrap(true);
+  coverage_label_->setToolTip(
+      tr("Whether the template set's views, rolls and depth layers reach each ground-truth pose "
+         "of the frame: a pose outside can only be missed (widen the envelope or set the up "
+         "axis). Its camera is drawn in the 3D view."));
+  coverage_label_->hide();
   auto* layout = new QVBoxLayout(box);
   layout->addWidget(archive_label_);
+  layout->addWidget(coverage_label_);
   layout->addLayout(buttons);
   layout->addWidget(detect_on_load_);
   connect(open_archive, &QPushButton::clicked, this, &DetectionPanel::OpenArchiveRequested);
@@ -314,19 +324,18 @@ void DetectionPanel::RunPending() {
 bool DetectionPanel::StartLoad(const CaptureSource& source) {
   return runner_->Start(
       tr("Open capture %1").arg(source.Describe()), [this, source](const JobControl&) {
-        LoadedCapture loaded = LoadCaptureSource(source);
-        auto capture = std::make_shared<const Capture>(std::move(loaded.capture));
-        return JobRunner::Commit([this, source, capture, ids = std::move(loaded.scene_frame_ids)] {
-          ShowCapture(source, capture, ids);
-        });
+        auto loaded = std::make_shared<LoadedCapture>(LoadCaptureSource(source));
+        auto capture = std::make_shared<const Capture>(std::move(loaded->capture));
+        return JobRunner::Commit(
+            [this, source, capture, loaded] { ShowCapture(source, capture, std::move(*loaded)); });
       });
 }
 
 void DetectionPanel::ShowCapture(const CaptureSource& source,
-                                 std::shared_ptr<const Capture> capture,
-                                 std::vector<int> frame_ids) {
+                                 std::shared_ptr<const Capture> capture, LoadedCapture loaded) {
   source_ = source;
-  frame_ids_ = std::move(frame_ids);
+  frame_ids_ = std::move(loaded.scene_frame_ids);
+  ground_truth_ = std::move(loaded.ground_truth);
   capture_ = std::move(capture);
   result_ = nullptr;
   result_detector_ = nullptr;
@@ -351,6 +360,7 @@ void DetectionPanel::ShowCapture(const CaptureSource& source,
   FillDetectionTable(table_, {});
   timings_->clear();
   RefreshImage();
+  UpdateCoverage();
   UpdateState();
   emit CaptureOpened();
   // While frames are stepped through quickly, only the last one is detected.
@@ -404,6 +414,7 @@ void DetectionPanel::OnArchiveChanged() {
   timings_->clear();
   RefreshImage();
   UpdateLegend();
+  UpdateCoverage();
   UpdateState();
   if (detect_on_load_->isChecked() && capture_ != nullptr && session_->archive() != nullptr) {
     Detect();
@@ -427,6 +438,15 @@ void DetectionPanel::RefreshImage() {
   }
   image_->SetImage(
       ToQImage(ComposeDetectionOverlays(*capture_, *result_, *result_detector_, overlays())));
+}
+
+void DetectionPanel::UpdateCoverage() {
+  const auto archive = session_->archive();
+  coverage_ = archive == nullptr ? std::vector<GroundTruthCoverage>{}
+                                 : CheckGroundTruthCoverage(*archive, ground_truth_);
+  coverage_label_->setText(CoverageHtml(coverage_));
+  coverage_label_->setVisible(!coverage_.empty());
+  emit CoverageChanged();
 }
 
 void DetectionPanel::UpdateLegend() {

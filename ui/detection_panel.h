@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "eval/envelope_coverage.h"
 #include "ui/capture_source.h"
 #include "ui/detection_overlays.h"
 
@@ -61,6 +62,9 @@ class DetectionPanel : public QWidget {
   QTableWidget* table() const { return table_; }
   QCheckBox* overlay_toggle(int index) const { return toggles_[index]; }  // pipeline order
   int frame_in_form() const;
+  // The BOP frame's ground-truth instances against the template set's envelope (empty without
+  // ground truth or templates).
+  const std::vector<GroundTruthCoverage>& ground_truth_coverage() const { return coverage_; }
 
  public slots:
   void OpenBopFrameDialog();
@@ -73,6 +77,8 @@ class DetectionPanel : public QWidget {
  signals:
   void CaptureOpened();
   void DetectionFinished();
+  // ground_truth_coverage() changed (another frame or template set).
+  void CoverageChanged();
   // Whether Detect and frame stepping are possible may have changed.
   void StateChanged();
   void OpenArchiveRequested();
@@ -90,7 +96,8 @@ class DetectionPanel : public QWidget {
   bool StartLoad(const CaptureSource& source);
   bool StartDetect();
   void ShowCapture(const CaptureSource& source, std::shared_ptr<const Capture> capture,
-                   std::vector<int> frame_ids);
+                   LoadedCapture loaded);
+  void UpdateCoverage();
   void ShowResult(std::shared_ptr<const Detector> detector,
                   std::shared_ptr<const DetectionResult> result);
   void OnArchiveChanged();
@@ -103,7 +110,9 @@ class DetectionPanel : public QWidget {
   JobRunner* runner_;
   std::vector<std::function<bool()>> pending_;
   CaptureSource source_;
-  std::vector<int> frame_ids_;  // of the loaded BOP scene
+  std::vector<int> frame_ids_;                // of the loaded BOP scene
+  std::vector<BopGroundTruth> ground_truth_;  // of the loaded BOP frame
+  std::vector<GroundTruthCoverage> coverage_;
   // The capture to load next; a newer request replaces it (fast frame stepping loads the last).
   std::optional<CaptureSource> queued_capture_;
   std::shared_ptr<const Capture> capture_;
@@ -118,6 +127,7 @@ class DetectionPanel : public QWidget {
   QSpinBox* frame_;
   QLabel* capture_label_;
   QLabel* archive_label_;
+  QLabel* coverage_label_;
   DetectionOptionsForm* options_;
   QCheckBox* detect_on_load_;
   QPushButton* detect_;

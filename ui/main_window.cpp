@@ -125,7 +125,9 @@ void MainWindow::Wire() {
   auto show_coverage = [this] {
     const auto& plan = views_panel_->plan();
     scene_->SetCoverage(plan ? plan->layer_depths_mm : std::vector<double>{},
-                        plan ? plan->views : std::vector<ViewAngles>{});
+                        plan ? plan->views : std::vector<ViewAngles>{},
+                        views_panel_->profile().views.upright_from_model);
+    scene_->SetGroundTruthViews(detection_panel_->ground_truth_coverage());
   };
   // The views panel re-plans on ModelChanged before this runs; the glyphs follow the new sphere.
   connect(session_, &StudioSession::ModelChanged, this, [this, show_coverage] {
@@ -146,6 +148,8 @@ void MainWindow::Wire() {
           &MainWindow::ShowDetectionInScene);
   connect(detection_panel_, &DetectionPanel::CaptureOpened, this,
           [this] { tabs_->setCurrentWidget(detection_panel_); });
+  connect(detection_panel_, &DetectionPanel::CoverageChanged, this,
+          [this] { scene_->SetGroundTruthViews(detection_panel_->ground_truth_coverage()); });
   // The preview gets the whole window; the authoring docks return with the 3D view.
   connect(tabs_, &QTabWidget::currentChanged, docks_,
           [this] { docks_->SetPreviewShown(tabs_->currentWidget() == detection_panel_); });
@@ -170,7 +174,8 @@ void MainWindow::WireTraining() {
       model_panel_->setEnabled(true);
     });
   }
-  connect(views_panel_, &ViewsPanel::PlanChanged, training_panel_, &TrainingPanel::RefreshState);
+  connect(views_panel_, &ViewsPanel::PlanChanged, training_panel_,
+          [this] { training_panel_->SetFormProblem(views_panel_->problem()); });
   connect(training_panel_, &TrainingPanel::ArchiveExported, this,
           [this](const QString& path, int templates) {
             statusBar()->showMessage(tr("Exported %1 templates to %2")

@@ -55,8 +55,9 @@ ModelPanel::ModelPanel(StudioSession* session, JobRunner* runner, QWidget* paren
   units_->setToolTip(tr("Units of the mesh file; the model is converted to mm (reloads)"));
   recentre_->setObjectName("recentreButton");
   recentre_->setToolTip(
-      tr("Move the model so that its sphere centre is the origin: poses then "
-         "refer to the object's centre"));
+      tr("Move the model so that its sphere centre is the origin: poses then refer to the "
+         "object's centre.\nLeave the origin as it is when ground truth is given in the mesh's "
+         "own frame (BOP datasets): re-centred poses no longer match it."));
   warnings_->setStyleSheet("QLabel { background: #5a4a12; color: #ffe9a8; padding: 4px; }");
 
   auto* form = new QFormLayout;

@@ -2,7 +2,8 @@
 #include "ui/object_form.h"
 
 #include <QFileInfo>
-#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QSignalBlocker>
@@ -29,10 +30,13 @@ ObjectForm::ObjectForm(QWidget* parent) : QWidget(parent), id_(new QSpinBox), na
       tr("BOP object id: detections and ground truth are matched by it (obj_000008.ply: 8)"));
   name_->setObjectName("objNameEdit");
   name_->setToolTip(tr("Name shown with each detection"));
-  auto* form = new QFormLayout(this);
-  form->setContentsMargins(0, 0, 0, 0);
-  form->addRow(tr("Object id"), id_);
-  form->addRow(tr("Name"), name_);
+  // One row: the id is short, the name takes the rest.
+  auto* row = new QHBoxLayout(this);
+  row->setContentsMargins(0, 0, 0, 0);
+  row->addWidget(new QLabel(tr("Id")));
+  row->addWidget(id_);
+  row->addWidget(new QLabel(tr("Name")));
+  row->addWidget(name_, 1);
   connect(id_, qOverload<int>(&QSpinBox::valueChanged), this, &ObjectForm::Changed);
   connect(name_, &QLineEdit::textChanged, this, &ObjectForm::Changed);
 }

@@ -3,6 +3,7 @@
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
+#include <vtkArrowSource.h>
 #include <vtkAxesActor.h>
 #include <vtkCellArray.h>
 #include <vtkConeSource.h>
@@ -11,6 +12,8 @@
 #include <vtkGlyph3D.h>
 #include <vtkLineSource.h>
 #include <vtkLookupTable.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -19,9 +22,12 @@
 #include <vtkScalarBarActor.h>
 #include <vtkSphereSource.h>
 #include <vtkTextProperty.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkVariant.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +35,7 @@
 #include <utility>
 
 #include "geometry/pose.h"
+#include "geometry/up_axis.h"
 #include "pipeline/overlays.h"
 
 namespace layermod::ui {
@@ -64,6 +71,7 @@ std::vector<ViewAngles> DistinctDirections(const std::vector<ViewAngles>& views)
 }
 
 vtkSmartPointer<vtkPolyData> CoveragePoints(const Sphere& sphere,
+                                            const Eigen::Matrix3d& upright_from_model,
                                             const std::vector<double>& layer_depths_mm,
                                             const std::vector<ViewAngles>& directions) {
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -76,7 +84,7 @@ vtkSmartPointer<vtkPolyData> CoveragePoints(const Sphere& sphere,
   for (std::size_t layer = 0; layer < layer_depths_mm.size(); ++layer) {
     for (const ViewAngles& direction : directions) {
       const Eigen::Vector3d at =
-          GlyphPosition(sphere, direction, layer_depths_mm[layer], nearest_mm);
+          GlyphPosition(sphere, upright_from_model, direction, layer_depths_mm[layer], nearest_mm);
       points->InsertNextPoint(at.data());
       layers->InsertNextValue(static_cast<float>(layer));
       // Towards the centre; the length is the glyph size (scale by vector).
@@ -172,13 +180,44 @@ vtkSmartPointer<vtkAxesActor> MakeAxesActor(double length_mm) {
   return axes;
 }
 
-Eigen::Vector3d GlyphPosition(const Sphere& sphere, const ViewAngles& view, double depth_mm,
-                              double nearest_depth_mm) {
+Eigen::Vector3d GlyphPosition(const Sphere& sphere, const Eigen::Matrix3d& upright_from_model,
+                              const ViewAngles& view, double depth_mm, double nearest_depth_mm) {
   const double shell_mm = kNearestShellRadii * sphere.radius * depth_mm / nearest_depth_mm;
-  return sphere.centre + shell_mm * ToCamera(view);
+  return sphere.centre + shell_mm * (upright_from_model.transpose() * ToCamera(view));
+}
+
+vtkSmartPointer<vtkActor> MakeUpArrowActor(const Sphere& sphere,
+                                           const Eigen::Matrix3d& upright_from_model) {
+  const Eigen::Vector3d up = UpDirectionInModel(upright_from_model);
+  auto arrow = vtkSmartPointer<vtkArrowSource>::New();
+  arrow->SetShaftRadius(0.025);
+  arrow->SetTipRadius(0.07);
+  arrow->SetTipLength(0.12);
+  arrow->SetShaftResolution(16);
+  arrow->SetTipResolution(16);
+  // vtkArrowSource points along +X from the origin, one unit long.
+  const double length_mm = 2.0 * sphere.radius;
+  const Eigen::Matrix3d along_up =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), up).toRotationMatrix();
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  vtkNew<vtkMatrix4x4> matrix;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, length_mm * along_up(r, c));
+    matrix->SetElement(r, 3, sphere.centre[r]);
+  }
+  transform->SetMatrix(matrix);
+  auto placed = vtkSmartPointer<vtkTransformPolyDataFilter>::New();
+  placed->SetInputConnection(arrow->GetOutputPort());
+  placed->SetTransform(transform);
+  placed->Update();
+  auto actor = ActorFor(placed->GetOutput());
+  actor->GetProperty()->SetColor(1.0, 0.85, 0.1);
+  actor->GetProperty()->SetAmbient(0.4);
+  return actor;
 }
 
 vtkSmartPointer<vtkActor> MakeCoverageActor(const Sphere& sphere,
+                                            const Eigen::Matrix3d& upright_from_model,
                                             const std::vector<double>& layer_depths_mm,
                                             const std::vector<ViewAngles>& views,
                                             int* glyph_count) {
@@ -189,7 +228,8 @@ vtkSmartPointer<vtkActor> MakeCoverageActor(const Sphere& sphere,
   cone->SetHeight(1.0);
   cone->SetRadius(0.35);
   auto glyphs = vtkSmartPointer<vtkGlyph3D>::New();
-  const auto points = CoveragePoints(sphere, layer_depths_mm, DistinctDirections(views));
+  const auto points =
+      CoveragePoints(sphere, upright_from_model, layer_depths_mm, DistinctDirections(views));
   *glyph_count = static_cast<int>(points->GetNumberOfPoints());
   glyphs->SetInputData(points);
   glyphs->SetSourceConnection(cone->GetOutputPort());
@@ -239,8 +279,8 @@ vtkSmartPointer<vtkScalarBarActor> MakeDepthScalarBar(vtkActor* coverage) {
   return bar;
 }
 
-vtkSmartPointer<vtkActor> MakeHighlightActor(const Sphere& sphere,
-                                             const Eigen::Vector3d& position) {
+vtkSmartPointer<vtkActor> MakeHighlightActor(const Sphere& sphere, const Eigen::Vector3d& position,
+                                             const Eigen::Vector3d& rgb) {
   const Eigen::Vector3d aim = sphere.centre - position;
   const double size_mm = aim.norm() * kGlyphFraction * 2.5;
   auto cone = vtkSmartPointer<vtkConeSource>::New();
@@ -257,7 +297,7 @@ vtkSmartPointer<vtkActor> MakeHighlightActor(const Sphere& sphere,
   both->AddInputConnection(line->GetOutputPort());
   both->Update();
   auto actor = ActorFor(both->GetOutput());
-  actor->GetProperty()->SetColor(1.0, 0.9, 0.1);
+  actor->GetProperty()->SetColor(rgb.x(), rgb.y(), rgb.z());
   actor->GetProperty()->SetLineWidth(2.0);
   actor->GetProperty()->SetAmbient(0.5);
   return actor;

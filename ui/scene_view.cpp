@@ -61,6 +61,7 @@ void SceneView::SetModel(std::shared_ptr<const Model> model) {
   RemoveModelActors();
   ClearHighlight();
   ClearDetection();
+  SetGroundTruthViews({});
   model_ = std::move(model);
   if (model_ != nullptr) {
     sphere_ = MakeSphereActor(model_->sphere);
@@ -73,21 +74,28 @@ void SceneView::SetModel(std::shared_ptr<const Model> model) {
 }
 
 void SceneView::SetCoverage(const std::vector<double>& layer_depths_mm,
-                            const std::vector<ViewAngles>& views) {
-  if (coverage_ != nullptr) renderer_->RemoveViewProp(coverage_);
+                            const std::vector<ViewAngles>& views,
+                            const Eigen::Matrix3d& upright_from_model) {
+  for (const auto& prop : {coverage_, up_arrow_}) {
+    if (prop != nullptr) renderer_->RemoveViewProp(prop);
+  }
   if (scalar_bar_ != nullptr) renderer_->RemoveViewProp(scalar_bar_);
   coverage_ = nullptr;
+  up_arrow_ = nullptr;
   scalar_bar_ = nullptr;
   coverage_glyphs_ = 0;
   coverage_radius_mm_ = 0.0;
+  upright_from_model_ = upright_from_model;
+  nearest_layer_mm_ = layer_depths_mm.empty() ? 0.0 : layer_depths_mm.front();
   if (model_ != nullptr) {
-    coverage_ = MakeCoverageActor(model_->sphere, layer_depths_mm, views, &coverage_glyphs_);
+    coverage_ = MakeCoverageActor(model_->sphere, upright_from_model, layer_depths_mm, views,
+                                  &coverage_glyphs_);
+    up_arrow_ = MakeUpArrowActor(model_->sphere, upright_from_model);
+    renderer_->AddViewProp(up_arrow_);
   }
   if (coverage_ != nullptr) {
-    coverage_radius_mm_ =
-        (GlyphPosition(model_->sphere, {}, layer_depths_mm.back(), layer_depths_mm.front()) -
-         model_->sphere.centre)
-            .norm();
+    coverage_radius_mm_ = kNearestShellRadii * model_->sphere.radius * layer_depths_mm.back() /
+                          layer_depths_mm.front();
   }
   if (coverage_ != nullptr) {
     scalar_bar_ = MakeDepthScalarBar(coverage_);
@@ -103,14 +111,35 @@ void SceneView::ShowTemplateCamera(const TemplateRecord& record, const PinholeCa
   if (model_ == nullptr || layer_depths_mm.empty()) return;
   ClearHighlight();
   const Sphere& sphere = model_->sphere;
-  highlight_ = MakeHighlightActor(
-      sphere, GlyphPosition(sphere, record.view, record.layer_depth_mm, layer_depths_mm.front()));
+  highlight_ =
+      MakeHighlightActor(sphere, GlyphPosition(sphere, upright_from_model_, record.view,
+                                               record.layer_depth_mm, layer_depths_mm.front()));
   renderer_->AddViewProp(highlight_);
 
   // The template's pose and field of view show the model as in the template's render. Only the
   // model's depth is kept, which hides the glyphs between that camera and the model until the
   // user moves the view.
   LookThrough(record.cam_from_model, camera, sphere, 1.5 * sphere.radius);
+  Render();
+}
+
+void SceneView::SetGroundTruthViews(const std::vector<GroundTruthCoverage>& coverage) {
+  for (const auto& prop : ground_truth_props_) renderer_->RemoveViewProp(prop);
+  ground_truth_props_.clear();
+  if (model_ != nullptr) {
+    for (const GroundTruthCoverage& instance : coverage) {
+      if (!instance.check.has_value()) continue;
+      const EnvelopeCheck& check = *instance.check;
+      const double nearest_mm = nearest_layer_mm_ > 0.0 ? nearest_layer_mm_ : check.depth_mm;
+      const Eigen::Vector3d at =
+          GlyphPosition(model_->sphere, upright_from_model_,
+                        {check.azimuth_deg, check.elevation_deg, 0.0}, check.depth_mm, nearest_mm);
+      const Eigen::Vector3d rgb =
+          check.inside ? Eigen::Vector3d(1.0, 1.0, 1.0) : Eigen::Vector3d(1.0, 0.25, 0.25);
+      ground_truth_props_.push_back(MakeHighlightActor(model_->sphere, at, rgb));
+      renderer_->AddViewProp(ground_truth_props_.back());
+    }
+  }
   Render();
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "eval/envelope_coverage.h"
 #include "geometry/camera.h"
 #include "geometry/views.h"
 #include "mesh/model.h"
@@ -32,13 +33,19 @@ class SceneView : public QVTKOpenGLNativeWidget {
   ~SceneView() override;
 
   void SetModel(std::shared_ptr<const Model> model);
-  // Camera glyphs for `layer_depths_mm` x `views`; empty vectors clear them.
-  void SetCoverage(const std::vector<double>& layer_depths_mm,
-                   const std::vector<ViewAngles>& views);
+  // Camera glyphs for `layer_depths_mm` x `views` (angles in the upright frame) and the up
+  // arrow; empty vectors clear the glyphs.
+  void SetCoverage(const std::vector<double>& layer_depths_mm, const std::vector<ViewAngles>& views,
+                   const Eigen::Matrix3d& upright_from_model);
   // Highlights the glyph of `record` and looks at the model through that template's camera.
   void ShowTemplateCamera(const TemplateRecord& record, const PinholeCamera& camera,
                           const std::vector<double>& layer_depths_mm);
   void ClearHighlight();
+  // A camera cone per ground-truth instance of a loaded frame, among the template cameras: white
+  // when the envelope covers it, red when not. Instances of objects without templates are left
+  // out; an empty list clears them.
+  void SetGroundTruthViews(const std::vector<GroundTruthCoverage>& coverage);
+  int ground_truth_view_count() const { return static_cast<int>(ground_truth_props_.size()); }
   // The capture's point cloud around `detection` and the detected mesh, in the object's model
   // frame, seen from the capture camera's position; the coverage glyphs are hidden meanwhile.
   void ShowDetection(const Capture& capture, const ArchiveObject& object,
@@ -47,6 +54,7 @@ class SceneView : public QVTKOpenGLNativeWidget {
 
   int coverage_glyph_count() const { return coverage_glyphs_; }
   bool has_highlight() const { return highlight_ != nullptr; }
+  bool has_up_arrow() const { return up_arrow_ != nullptr; }
   bool has_detection() const { return !detection_props_.empty(); }
   int detection_cloud_points() const { return detection_cloud_points_; }
 
@@ -72,9 +80,13 @@ class SceneView : public QVTKOpenGLNativeWidget {
   std::vector<vtkSmartPointer<vtkProp>> model_props_;
   vtkSmartPointer<vtkActor> sphere_;
   vtkSmartPointer<vtkActor> coverage_;
+  vtkSmartPointer<vtkActor> up_arrow_;
+  Eigen::Matrix3d upright_from_model_ = Eigen::Matrix3d::Identity();
   vtkSmartPointer<vtkScalarBarActor> scalar_bar_;
   vtkSmartPointer<vtkActor> highlight_;
   std::vector<vtkSmartPointer<vtkProp>> detection_props_;
+  std::vector<vtkSmartPointer<vtkProp>> ground_truth_props_;
+  double nearest_layer_mm_ = 0.0;  // of the coverage shown; 0 without
   int detection_cloud_points_ = 0;
   int coverage_glyphs_ = 0;
   double coverage_radius_mm_ = 0.0;  // outermost glyph shell around the sphere centre

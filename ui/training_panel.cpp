@@ -49,7 +49,8 @@ TrainingPanel::TrainingPanel(StudioSession* session, JobRunner* runner, RequestS
       progress_(new QProgressBar),
       eta_(new QLabel),
       summary_(new QLabel),
-      stale_(new QLabel) {
+      stale_(new QLabel),
+      train_tip_(tr("Render every view at every depth layer and extract its template (Ctrl+T)")) {
   train_->setObjectName("trainButton");
   cancel_->setObjectName("cancelButton");
   export_->setObjectName("exportButton");
@@ -67,8 +68,7 @@ TrainingPanel::TrainingPanel(StudioSession* session, JobRunner* runner, RequestS
       tr("The form has changed since this set was made: Train again to apply it. Export writes "
          "the set as it was made."));
   stale_->hide();
-  train_->setToolTip(
-      tr("Render every view at every depth layer and extract its template (Ctrl+T)"));
+  train_->setToolTip(train_tip_);
   cancel_->setToolTip(tr("Stop the running job (Esc)"));
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(train_);
@@ -98,7 +98,7 @@ TrainingPanel::TrainingPanel(StudioSession* session, JobRunner* runner, RequestS
 
 bool TrainingPanel::StartTraining() {
   const auto model = session_->model();
-  if (model == nullptr || runner_->busy()) return false;
+  if (model == nullptr || runner_->busy() || !form_problem_.isEmpty()) return false;
   if (!ConfirmDiscardUnsaved(this, *session_)) return false;
   // The run uses this snapshot; the form is locked until it ends (TrainingStarted).
   const TrainingRequest request = request_();
@@ -148,7 +148,10 @@ bool TrainingPanel::stale() const {
   return basis_.has_value() && !SameRequest(*basis_, request_());
 }
 
-void TrainingPanel::RefreshState() { UpdateButtons(); }
+void TrainingPanel::SetFormProblem(const QString& problem) {
+  form_problem_ = problem;
+  UpdateButtons();
+}
 
 void TrainingPanel::OnProgress(qint64 done, qint64 total, const QString& stage, double elapsed_s) {
   if (!training_ || total <= 0) return;
@@ -236,7 +239,9 @@ QString TrainingPanel::export_text() const {
 }
 
 void TrainingPanel::UpdateButtons() {
-  train_->setEnabled(!runner_->busy() && session_->model() != nullptr);
+  train_->setEnabled(!runner_->busy() && session_->model() != nullptr && form_problem_.isEmpty());
+  train_->setToolTip(form_problem_.isEmpty() ? train_tip_
+                                             : tr("Cannot train: %1").arg(form_problem_));
   cancel_->setEnabled(training_);
   const bool is_stale = stale();
   export_->setEnabled(!training_ && session_->archive() != nullptr);

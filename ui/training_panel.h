@@ -39,8 +39,9 @@ class TrainingPanel : public QWidget {
 
  public slots:
   void CancelTraining();
-  // The form changed: re-check whether the shown set is stale.
-  void RefreshState();
+  // The form changed: why it cannot be trained (empty when it can; Train is then disabled and
+  // says why), and whether the shown set is still what the form describes (stale).
+  void SetFormProblem(const QString& problem);
 
  signals:
   void TrainingStarted();
@@ -62,6 +63,7 @@ class TrainingPanel : public QWidget {
   bool training_ = false;
   // What the session's template set was trained (or opened) with; empty without a set.
   std::optional<TrainingRequest> basis_;
+  QString form_problem_;
   QPushButton* train_;
   QPushButton* cancel_;
   QPushButton* export_;
@@ -69,6 +71,7 @@ class TrainingPanel : public QWidget {
   QLabel* eta_;
   QLabel* summary_;
   QLabel* stale_;
+  const QString train_tip_;
 };
 
 }  // namespace layermod::ui

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "ui/views_panel.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
@@ -13,11 +13,14 @@
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTimer>
+#include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "geometry/up_axis.h"
 #include "ui/camera_form.h"
 #include "ui/object_form.h"
 #include "ui/studio_dialogs.h"
@@ -28,6 +31,9 @@ namespace {
 
 // Long enough to let someone type "1500" without four re-plans and glyph rebuilds.
 constexpr int kDebounceMs = 200;
+
+// The up-axis entry of a rotation that is none of the six axes.
+constexpr char kCustomUpAxis[] = "tilted";
 
 // Narrow enough for the three-column angle grid in a ~370 px dock.
 constexpr int kNumberBoxMinWidthPx = 64;
@@ -72,8 +78,7 @@ ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
   lock_note_ = lock_note;
   auto* object_box = new QGroupBox(tr("Object"));
   (new QVBoxLayout(object_box))->addWidget(object_);
-  auto* camera_box = new QGroupBox(tr("Camera (pinhole, as the sensor)"));
-  (new QVBoxLayout(camera_box))->addWidget(camera_);
+  QWidget* camera_box = BuildCameraBox();
   auto* save = new QPushButton(tr("Save profile…"));
   auto* load = new QPushButton(tr("Load profile…"));
   auto* buttons = new QHBoxLayout;
@@ -86,6 +91,7 @@ ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
   layout->addWidget(lock_note_);
   layout->addWidget(object_box);
   layout->addWidget(BuildDepthBox());
+  layout->addWidget(BuildOrientationBox());
   layout->addWidget(BuildViewsBox());
   layout->addWidget(BuildFeaturesBox());
   layout->addWidget(camera_box);
@@ -112,6 +118,38 @@ ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
   UpdatePlan();
 }
 
+QWidget* ViewsPanel::BuildCameraBox() {
+  // Folded to one line: set once per sensor, it need not take a short screen's height.
+  auto* toggle = new QToolButton;
+  toggle->setObjectName("cameraToggle");
+  toggle->setCheckable(true);
+  toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  toggle->setAutoRaise(true);
+  toggle->setArrowType(Qt::RightArrow);
+  toggle->setToolTip(tr("The pinhole camera every template is rendered with (as the sensor)"));
+  camera_->hide();
+  auto update_summary = [this, toggle] {
+    const PinholeCamera cam = camera_->camera();
+    toggle->setText(tr("Camera: f %1 / %2 px, %3×%4")
+                        .arg(cam.fx, 0, 'f', 1)
+                        .arg(cam.fy, 0, 'f', 1)
+                        .arg(cam.width)
+                        .arg(cam.height));
+  };
+  update_summary();
+  connect(camera_, &CameraForm::Changed, toggle, update_summary);
+  connect(toggle, &QToolButton::toggled, this, [this, toggle](bool open) {
+    toggle->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+    camera_->setVisible(open);
+  });
+  auto* box = new QWidget;
+  auto* layout = new QVBoxLayout(box);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(toggle);
+  layout->addWidget(camera_);
+  return box;
+}
+
 QWidget* ViewsPanel::BuildDepthBox() {
   depth_min_ = NumberBox(1.0, 1e6, " mm");
   depth_max_ = NumberBox(1.0, 1e6, " mm");
@@ -119,14 +157,83 @@ QWidget* ViewsPanel::BuildDepthBox() {
   depth_max_->setObjectName("depthMaxBox");
   auto* box = new QGroupBox(tr("Depth range"));
   box->setToolTip(tr("Depth layers are spaced by the sphere radius r"));
-  auto* form = new QFormLayout(box);
-  form->addRow(tr("D_min"), depth_min_);
-  form->addRow(tr("D_max"), depth_max_);
+  auto* row = new QHBoxLayout(box);
+  row->addWidget(new QLabel(tr("D_min")));
+  row->addWidget(depth_min_, 1);
+  row->addWidget(new QLabel(tr("D_max")));
+  row->addWidget(depth_max_, 1);
   for (QDoubleSpinBox* spin : {depth_min_, depth_max_}) {
     connect(spin, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
             &ViewsPanel::ScheduleUpdate);
   }
   return box;
+}
+
+QWidget* ViewsPanel::BuildOrientationBox() {
+  up_axis_ = new QComboBox;
+  up_axis_->setObjectName("upAxisCombo");
+  for (const std::string& name : UpAxisNames()) up_axis_->addItem(QString::fromStdString(name));
+  up_axis_->setToolTip(
+      tr("The model axis that points up when the part stands as used (yellow arrow in the 3D "
+         "view). Elevation and roll are measured from it; poses stay in the mesh's frame."));
+  auto* tabletop = new QPushButton(tr("Tabletop"));
+  auto* full = new QPushButton(tr("Full sphere"));
+  tabletop->setObjectName("tabletopPresetButton");
+  full->setObjectName("fullPresetButton");
+  tabletop->setToolTip(tr("The part stands on its base: elevation 0–90°, roll ±45°"));
+  full->setToolTip(
+      tr("Any orientation (bin picking): the whole view sphere, roll all round; about 7× the "
+         "templates of tabletop"));
+  auto* box = new QGroupBox(tr("Orientation and views preset"));
+  auto* row = new QHBoxLayout(box);
+  row->addWidget(new QLabel(tr("Up")));
+  row->addWidget(up_axis_);
+  row->addSpacing(8);
+  row->addWidget(tabletop, 1);
+  row->addWidget(full, 1);
+  connect(up_axis_, qOverload<int>(&QComboBox::activated), this, [this] {
+    const QString name = up_axis_->currentText();
+    if (UpAxisNames().end() ==
+        std::find(UpAxisNames().begin(), UpAxisNames().end(), name.toStdString())) {
+      return;  // the profile's own rotation, kept
+    }
+    SetUpright(UprightFromUpAxis(name.toStdString()));
+  });
+  connect(tabletop, &QPushButton::clicked, this, [this] { ApplyViewPreset("tabletop"); });
+  connect(full, &QPushButton::clicked, this, [this] { ApplyViewPreset("full"); });
+  return box;
+}
+
+void ViewsPanel::SetUpright(const Eigen::Matrix3d& upright_from_model) {
+  TrainingProfile changed = profile();
+  changed.views.upright_from_model = upright_from_model;
+  SetProfile(changed);
+}
+
+void ViewsPanel::ApplyViewPreset(const std::string& name) {
+  TrainingProfile changed = profile();
+  changed.views = ViewPreset(name, changed.views.upright_from_model);
+  SetProfile(changed);
+}
+
+void ViewsPanel::ShowUpAxis(const Eigen::Matrix3d& upright_from_model) {
+  const QSignalBlocker blocker(up_axis_);
+  const int custom = up_axis_->findText(kCustomUpAxis);
+  if (const auto name = UpAxisName(upright_from_model)) {
+    if (custom >= 0) up_axis_->removeItem(custom);
+    up_axis_->setCurrentText(QString::fromStdString(*name));
+    return;
+  }
+  // A rotation that is none of the six axes (a profile's, or a tilted resting face).
+  const Eigen::Vector3d up = UpDirectionInModel(upright_from_model);
+  if (custom < 0) up_axis_->addItem(kCustomUpAxis);
+  up_axis_->setCurrentText(kCustomUpAxis);
+  up_axis_->setItemData(up_axis_->findText(kCustomUpAxis),
+                        tr("up = (%1, %2, %3) in the model")
+                            .arg(up.x(), 0, 'f', 2)
+                            .arg(up.y(), 0, 'f', 2)
+                            .arg(up.z(), 0, 'f', 2),
+                        Qt::ToolTipRole);
 }
 
 QWidget* ViewsPanel::BuildViewsBox() {
@@ -165,10 +272,14 @@ QWidget* ViewsPanel::BuildViewsBox() {
 QWidget* ViewsPanel::BuildFeaturesBox() {
   color_features_ = CountBox("colorFeaturesBox");
   normal_features_ = CountBox("normalFeaturesBox");
+  color_features_->setToolTip(tr("Colour-gradient features per template"));
+  normal_features_->setToolTip(tr("Surface-normal features per template"));
   auto* box = new QGroupBox(tr("Features per template"));
-  auto* form = new QFormLayout(box);
-  form->addRow(tr("Colour gradients"), color_features_);
-  form->addRow(tr("Surface normals"), normal_features_);
+  auto* row = new QHBoxLayout(box);
+  row->addWidget(new QLabel(tr("Gradients")));
+  row->addWidget(color_features_, 1);
+  row->addWidget(new QLabel(tr("Normals")));
+  row->addWidget(normal_features_, 1);
   for (QSpinBox* spin : {color_features_, normal_features_}) {
     connect(spin, qOverload<int>(&QSpinBox::valueChanged), this, &ViewsPanel::ScheduleUpdate);
   }
@@ -207,6 +318,7 @@ void ViewsPanel::SetProfile(const TrainingProfile& profile) {
       angles_[row][2]->setValue(range.max_deg);
     }
     even_spacing_->setValue(profile.views.even_spacing_deg);
+    ShowUpAxis(profile.views.upright_from_model);
     color_features_->setValue(profile.features.color_features);
     normal_features_->setValue(profile.features.normal_features);
   }
@@ -268,15 +380,23 @@ void ViewsPanel::UpdatePlan() {
   plan_.reset();
   const auto model = session_->model();
   QString text;
+  problem_ = FormProblem();
   if (model == nullptr) {
     text = tr("Open a mesh to count depth layers and templates.");
-  } else {
+  } else if (problem_.isEmpty()) {
     try {
       plan_ = PlanTraining(*model, request());
     } catch (const std::exception& error) {
-      text = tr("<span style='color:#ff6b6b'>Invalid: %1</span>")
-                 .arg(QString::fromStdString(error.what()).toHtmlEscaped());
+      problem_ = QString::fromStdString(error.what());
     }
+  }
+  if (!problem_.isEmpty()) {
+    text = tr("<span style='color:#ff6b6b'>Cannot train: %1</span>").arg(problem_.toHtmlEscaped());
+  }
+  for (QDoubleSpinBox* box : {depth_min_, depth_max_}) {
+    box->setStyleSheet(depth_min_->value() < depth_max_->value()
+                           ? QString()
+                           : "QDoubleSpinBox { color: #d32f2f; }");
   }
   if (plan_.has_value()) {
     const QLocale locale;
@@ -291,6 +411,16 @@ void ViewsPanel::UpdatePlan() {
 }
 
 QString ViewsPanel::plan_text() const { return plan_label_->text(); }
+
+QString ViewsPanel::FormProblem() const {
+  // Said in the form's own words; the core's messages name profile-file fields.
+  if (depth_min_->value() >= depth_max_->value()) {
+    return tr("D_min (%1 mm) must be below D_max (%2 mm)")
+        .arg(depth_min_->value(), 0, 'f', 1)
+        .arg(depth_max_->value(), 0, 'f', 1);
+  }
+  return {};
+}
 
 bool ViewsPanel::SaveProfile(const QString& path) {
   try {

@@ -6,6 +6,7 @@
 
 #include "pipeline/training.h"
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
@@ -39,6 +40,8 @@ class ViewsPanel : public QWidget {
   // The plan for the current model and form (nullopt without a model or with invalid values).
   const std::optional<TrainingPlan>& plan() const { return plan_; }
   QString plan_text() const;
+  // Why the form cannot be trained as it stands (empty when it can, or without a model).
+  const QString& problem() const { return problem_; }
 
   // Profile files; failures show an error box naming the file.
   bool SaveProfile(const QString& path);
@@ -54,17 +57,24 @@ class ViewsPanel : public QWidget {
   void PlanChanged();
 
  private:
+  QWidget* BuildCameraBox();
   QWidget* BuildDepthBox();
+  QWidget* BuildOrientationBox();
   QWidget* BuildViewsBox();
+  void SetUpright(const Eigen::Matrix3d& upright_from_model);
+  void ApplyViewPreset(const std::string& name);
+  void ShowUpAxis(const Eigen::Matrix3d& upright_from_model);
   QWidget* BuildFeaturesBox();
   void OnModelChanged();
   void ScheduleUpdate();
   void ShowUnusedGridBoxes();
+  QString FormProblem() const;
 
   StudioSession* session_;
   TrainingProfile base_;  // fields the form does not show are kept from here
   QDoubleSpinBox* depth_min_;
   QDoubleSpinBox* depth_max_;
+  QComboBox* up_axis_;
   QDoubleSpinBox* angles_[3][3];  // [azimuth, elevation, roll][min, step, max]
   QDoubleSpinBox* even_spacing_;
   QSpinBox* color_features_;
@@ -76,6 +86,7 @@ class ViewsPanel : public QWidget {
   QLabel* plan_label_;
   QTimer* debounce_;
   std::optional<TrainingPlan> plan_;
+  QString problem_;
 };
 
 }  // namespace layermod::ui

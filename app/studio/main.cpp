@@ -8,6 +8,7 @@
 
 #include "ui/capture_source.h"
 #include "ui/detection_panel.h"
+#include "ui/focus_ring_style.h"
 #include "ui/main_window.h"
 #include "ui/screenshot.h"
 #include "ui/studio_dialogs.h"
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
   // VTK's OpenGL widget needs its surface format before the application exists.
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
+  QApplication::setStyle(new layermod::ui::FocusRingStyle);  // the application owns it
   QApplication::setOrganizationName("LayerMOD");
   QApplication::setApplicationName("layermod-studio");
   QApplication::setApplicationVersion(QString::fromStdString(layermod::ToolVersion()));

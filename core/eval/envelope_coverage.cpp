@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "geometry/views.h"
 #include "util/error.h"
@@ -99,10 +100,12 @@ EnvelopeCheck ViewEnvelope::Check(const Pose& cam_from_model) const {
   for (const Eigen::Vector3d& direction : directions_) {
     check.view_gap_deg = std::min(check.view_gap_deg, AngleDeg(to_camera, direction));
   }
-  const double elevation_deg = RadToDeg(std::asin(std::clamp(to_camera.z(), -1.0, 1.0)));
-  const double azimuth_deg = RadToDeg(std::atan2(to_camera.y(), to_camera.x()));
-  const Pose unrolled = CamFromModelForView({azimuth_deg, elevation_deg, 0.0}, centre_in_model_,
-                                            centre_in_cam.norm(), upright_from_model_);
+  check.elevation_deg = RadToDeg(std::asin(std::clamp(to_camera.z(), -1.0, 1.0)));
+  check.azimuth_deg = RadToDeg(std::atan2(to_camera.y(), to_camera.x()));
+  const double elevation_deg = check.elevation_deg;
+  const Pose unrolled =
+      CamFromModelForView({check.azimuth_deg, elevation_deg, 0.0}, centre_in_model_,
+                          centre_in_cam.norm(), upright_from_model_);
   const Eigen::Matrix3d roll = aimed.R * unrolled.R.transpose();
   check.roll_deg = RadToDeg(std::atan2(roll(1, 0), roll(0, 0)));
 
@@ -120,6 +123,23 @@ EnvelopeCheck ViewEnvelope::Check(const Pose& cam_from_model) const {
   }
   check.inside = check.reason.empty();
   return check;
+}
+
+std::vector<GroundTruthCoverage> CheckGroundTruthCoverage(
+    const TemplateArchive& archive, const std::vector<BopGroundTruth>& ground_truth) {
+  std::map<std::int32_t, ViewEnvelope> envelopes;
+  for (const ArchiveObject& object : archive.manifest().objects) {
+    envelopes.emplace(object.obj_id, ViewEnvelope(archive, object.obj_id));
+  }
+  std::vector<GroundTruthCoverage> coverage;
+  for (const BopGroundTruth& instance : ground_truth) {
+    GroundTruthCoverage entry{instance.obj_id, std::nullopt};
+    if (const auto found = envelopes.find(instance.obj_id); found != envelopes.end()) {
+      entry.check = found->second.Check(instance.cam_from_model);
+    }
+    coverage.push_back(std::move(entry));
+  }
+  return coverage;
 }
 
 }  // namespace layermod

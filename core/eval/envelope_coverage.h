@@ -3,9 +3,11 @@
 // training question (widen the envelope, set the up axis), not a detection failure.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "dataset/bop.h"
 #include "geometry/pose.h"
 #include "templates/archive.h"
 
@@ -15,8 +17,11 @@ struct EnvelopeCheck {
   bool inside = true;
   double view_gap_deg = 0.0;  // from the pose's view direction to the nearest template view
   double roll_deg = 0.0;      // the pose's in-plane rotation, as the templates' roll measures it
-  double depth_mm = 0.0;      // camera to sphere centre along the optical axis
-  std::string reason;         // why it is outside; empty inside
+  // The direction the camera sees the part from, in the profile's upright frame (as ViewAngles).
+  double azimuth_deg = 0.0;
+  double elevation_deg = 0.0;
+  double depth_mm = 0.0;  // camera to sphere centre along the optical axis
+  std::string reason;     // why it is outside; empty inside
 };
 
 // One object's envelope as its templates sample it: view directions (in the upright frame of
@@ -46,5 +51,15 @@ class ViewEnvelope {
   double depth_max_mm_ = 0.0;
   double layer_spacing_mm_ = 0.0;
 };
+
+// A frame's ground-truth instance against an archive's envelope.
+struct GroundTruthCoverage {
+  std::int32_t obj_id = 0;
+  std::optional<EnvelopeCheck> check;  // empty: the archive has no templates of that object
+};
+
+// One entry per instance of `ground_truth`, in its order.
+std::vector<GroundTruthCoverage> CheckGroundTruthCoverage(
+    const TemplateArchive& archive, const std::vector<BopGroundTruth>& ground_truth);
 
 }  // namespace layermod

@@ -37,6 +37,14 @@ std::optional<std::string> UpAxisName(const Eigen::Matrix3d& upright_from_model)
   return std::nullopt;
 }
 
+Eigen::Matrix3d UprightFromUpDirection(const Eigen::Vector3d& up_in_model) {
+  if (!up_in_model.allFinite() || up_in_model.norm() < 1e-12) {
+    throw Error("up direction: must be a finite, non-zero vector");
+  }
+  return Eigen::Quaterniond::FromTwoVectors(up_in_model.normalized(), Eigen::Vector3d::UnitZ())
+      .toRotationMatrix();
+}
+
 Eigen::Vector3d UpDirectionInModel(const Eigen::Matrix3d& upright_from_model) {
   return upright_from_model.transpose() * Eigen::Vector3d::UnitZ();
 }

@@ -23,6 +23,11 @@ Eigen::Matrix3d UprightFromUpAxis(std::string_view axis);
 // The axis name when `upright_from_model` is one of UprightFromUpAxis's rotations.
 std::optional<std::string> UpAxisName(const Eigen::Matrix3d& upright_from_model);
 
+// The smallest rotation that turns the model direction `up_in_model` (any length above 0) to +Z:
+// the upright frame of a part resting on a tilted face. Throws Error for a zero or non-finite
+// vector.
+Eigen::Matrix3d UprightFromUpDirection(const Eigen::Vector3d& up_in_model);
+
 // The model direction that points up: upright_from_model^T * +Z.
 Eigen::Vector3d UpDirectionInModel(const Eigen::Matrix3d& upright_from_model);
 

@@ -174,10 +174,12 @@ void AddWarning(Model& model, std::string text) {
 void AddWarnings(Model& model) {
   const double diameter_mm = model.DiameterMm();
   if (OriginFarFromCentre(model)) {
-    AddWarning(model, Quoted(model.source) + ": model " + kOriginWarningMarker + " its centre (" +
-                          FormatMm(model.sphere.centre.norm()) + " away, radius " +
-                          FormatMm(model.sphere.radius) +
-                          "); poses refer to the origin, consider re-centring");
+    AddWarning(model,
+               Quoted(model.source) + ": model " + kOriginWarningMarker + " its centre (" +
+                   FormatMm(model.sphere.centre.norm()) + " away, radius " +
+                   FormatMm(model.sphere.radius) +
+                   "); poses refer to the mesh's origin, as ground truth in the mesh's frame "
+                   "(BOP) does; re-centring would make them refer to the centre instead");
   }
   if (model.source_units == LengthUnit::kMillimetre && diameter_mm < kMetreScaleDiameterMm) {
     AddWarning(model, Quoted(model.source) + ": model is only " + FormatMm(diameter_mm) +

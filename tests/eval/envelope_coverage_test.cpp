@@ -64,6 +64,10 @@ TEST_F(EnvelopeCoverageTest, AnOffCentreObjectIsSeenFromTheSameView) {
   const EnvelopeCheck check = envelope.Check(pose);
   EXPECT_TRUE(check.inside) << check.reason;
   EXPECT_LT(check.view_gap_deg, envelope.view_step_deg());
+  // The view it is seen from, as the studio draws its camera among the template cameras.
+  const EnvelopeCheck centred = envelope.Check(ViewPose(40.0, 45.0, 10.0, 700.0));
+  EXPECT_NEAR(centred.azimuth_deg, 40.0, 1e-6);
+  EXPECT_NEAR(centred.elevation_deg, 45.0, 1e-6);
 }
 
 TEST_F(EnvelopeCoverageTest, PosesBeyondTheEnvelopeAreNamed) {
@@ -79,6 +83,22 @@ TEST_F(EnvelopeCoverageTest, PosesBeyondTheEnvelopeAreNamed) {
   EXPECT_NE(far.reason.find("depth 1500 mm"), std::string::npos) << far.reason;
   // Just beyond the last layer by less than a layer spacing still counts as covered.
   EXPECT_TRUE(envelope.Check(ViewPose(0.0, 45.0, 0.0, 810.0)).inside);
+}
+
+TEST_F(EnvelopeCoverageTest, AFramesGroundTruthIsCheckedPerInstance) {
+  const std::vector<BopGroundTruth> ground_truth = {{3, ViewPose(10.0, 50.0, 0.0, 700.0)},
+                                                    {9, ViewPose(10.0, 50.0, 0.0, 700.0)},
+                                                    {3, ViewPose(0.0, -60.0, 0.0, 700.0)}};
+  const std::vector<GroundTruthCoverage> coverage =
+      CheckGroundTruthCoverage(*archive_, ground_truth);
+  ASSERT_EQ(coverage.size(), 3u);
+  EXPECT_EQ(coverage[0].obj_id, 3);
+  ASSERT_TRUE(coverage[0].check.has_value());
+  EXPECT_TRUE(coverage[0].check->inside);
+  EXPECT_EQ(coverage[1].obj_id, 9);
+  EXPECT_FALSE(coverage[1].check.has_value());  // no templates of object 9
+  ASSERT_TRUE(coverage[2].check.has_value());
+  EXPECT_FALSE(coverage[2].check->inside);
 }
 
 TEST(EnvelopeCoverageUpAxisTest, TheEnvelopeFollowsTheUpAxis) {

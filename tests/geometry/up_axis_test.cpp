@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "geometry/views.h"
 #include "support/thrown.h"
@@ -28,6 +29,18 @@ TEST(UpAxisTest, EachNamedAxisIsTurnedToPlusZ) {
             std::nullopt);
   EXPECT_NE(test::ThrownMessage<Error>([] { UprightFromUpAxis("up"); }).find("'up'"),
             std::string::npos);
+}
+
+TEST(UpAxisTest, ATiltedUpDirectionIsTurnedToPlusZ) {
+  for (const Eigen::Vector3d& up :
+       {Eigen::Vector3d(0.2, -0.7, 0.7), Eigen::Vector3d(0, 0, -3), Eigen::Vector3d(0, 0, 1)}) {
+    const Eigen::Matrix3d upright = UprightFromUpDirection(up);
+    EXPECT_NO_THROW(ValidateRotation(upright, "upright"));
+    EXPECT_TRUE((upright * up.normalized()).isApprox(Eigen::Vector3d::UnitZ(), 1e-12));
+    EXPECT_TRUE(UpDirectionInModel(upright).isApprox(up.normalized(), 1e-12));
+  }
+  EXPECT_THROW(UprightFromUpDirection(Eigen::Vector3d::Zero()), Error);
+  EXPECT_THROW(UprightFromUpDirection(Eigen::Vector3d(std::nan(""), 0, 1)), Error);
 }
 
 TEST(UpAxisTest, RejectsWhatIsNotARotation) {

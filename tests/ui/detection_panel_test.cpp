@@ -21,6 +21,7 @@
 #include "pipeline/detector_options.h"
 #include "ui/detection_options_form.h"
 #include "ui/detection_panel.h"
+#include "ui/ground_truth_text.h"
 #include "ui/image_view.h"
 #include "ui/job_runner.h"
 #include "ui/main_window.h"
@@ -57,6 +58,38 @@ class DetectionPanelTest : public QObject {
              qPrintable(panel->table()->item(0, 0)->text()));
     QVERIFY(window_->findChild<QLabel*>("timingsLabel")->text().contains("total"));
     QVERIFY(window_->findChild<QLabel*>("layerLegend")->text().contains("mm"));
+  }
+
+  void GroundTruthCoverageIsShownAndDrawn() {
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy covered(panel, &DetectionPanel::CoverageChanged);
+    panel->OpenCapture({files.bop_dir, 1, 0, {}, {}, {}});
+    QTRY_VERIFY_WITH_TIMEOUT(covered.count() >= 1, 60000);
+    // The frame's ground truth is a template's own pose: inside the envelope.
+    QCOMPARE(panel->ground_truth_coverage().size(), std::size_t{1});
+    QVERIFY(panel->ground_truth_coverage()[0].check->inside);
+    auto* label = window_->findChild<QLabel*>("groundTruthLabel");
+    QVERIFY(label->isVisibleTo(panel));
+    QVERIFY2(label->text().contains("obj 1 at") && label->text().contains("covered"),
+             qPrintable(label->text()));
+    // Its camera among the template cameras needs the model in the 3D view.
+    QCOMPARE(window_->scene()->ground_truth_view_count(), 0);
+    window_->OpenFiles({SampleMeshPath()});
+    QTRY_VERIFY_WITH_TIMEOUT(window_->session()->model() != nullptr, 20000);
+    QTRY_COMPARE(window_->scene()->ground_truth_view_count(), 1);
+    QVERIFY(window_->session()->archive() != nullptr);
+
+    // A pose outside, and an object the set has no templates of, say so.
+    EnvelopeCheck outside;
+    outside.inside = false;
+    outside.depth_mm = 734.0;
+    outside.reason = "seen from -57 deg elevation, 58.1 deg from every template view";
+    const QString text = CoverageHtml({{1, outside}, {5, std::nullopt}});
+    QVERIFY2(text.contains("obj 1 at 734 mm: outside the envelope") &&
+                 text.contains("seen from -57 deg elevation"),
+             qPrintable(text));
+    QVERIFY(text.contains("obj 5: not in the template set"));
   }
 
   void EdgeBoundAndRefinementsReachTheDetectorAndPersist() {

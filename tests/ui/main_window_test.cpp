@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QTest>
 #include <QUrl>
@@ -202,6 +203,24 @@ class MainWindowTest : public QObject {
       QVERIFY(quit.seen());
     }
     QTRY_VERIFY_WITH_TIMEOUT(!window_->runner()->busy(), 60000);
+  }
+
+  void AnInvalidFormCannotBeTrained() {
+    window_->OpenFiles({SampleMeshPath()});
+    QTRY_VERIFY_WITH_TIMEOUT(window_->session()->model() != nullptr, 20000);
+    QTRY_VERIFY(!window_->runner()->busy());
+    auto* train = window_->findChild<QPushButton*>("trainButton");
+    TrainingProfile profile = TinyProfile();
+    window_->views_panel()->SetProfile(profile);
+    window_->views_panel()->UpdatePlan();
+    QVERIFY(train->isEnabled());
+    profile.depth_min_mm = profile.depth_max_mm + 100.0;
+    window_->views_panel()->SetProfile(profile);
+    window_->views_panel()->UpdatePlan();
+    QVERIFY(!train->isEnabled());
+    QVERIFY2(train->toolTip().contains("must be below D_max"), qPrintable(train->toolTip()));
+    QVERIFY(!window_->training_panel()->StartTraining());  // Ctrl+T is refused too
+    QVERIFY(!window_->runner()->busy());
   }
 
   void ClosingSavesTheProfileForTheNextRun() {

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
+#include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QLocale>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTest>
 #include <nlohmann/json.hpp>
 
+#include "geometry/up_axis.h"
 #include "ui/object_form.h"
 #include "ui/studio_session.h"
 #include "ui/views_panel.h"
@@ -103,9 +106,48 @@ class ViewsPanelTest : public QObject {
     SetBox("depthMaxBox", 800.0);
     panel_->UpdatePlan();
     QVERIFY(!panel_->plan().has_value());
-    QVERIFY(panel_->plan_text().contains("Invalid"));
-    QVERIFY2(panel_->plan_text().contains("depth_min_mm must be below depth_max_mm"),
+    // In the form's words, not a profile file's field names.
+    QCOMPARE(panel_->problem(), QString("D_min (900.0 mm) must be below D_max (800.0 mm)"));
+    QVERIFY2(panel_->plan_text().contains("Cannot train: D_min (900.0 mm) must be below"),
              qPrintable(panel_->plan_text()));
+    QVERIFY(!panel_->plan_text().contains("depth_min_mm"));
+    SetBox("depthMaxBox", 1000.0);
+    panel_->UpdatePlan();
+    QVERIFY(panel_->problem().isEmpty());
+    QVERIFY(panel_->plan().has_value());
+  }
+
+  void UpAxisAndPresetsSetTheEnvelope() {
+    session_->SetModel(model_);
+    auto* up_axis = panel_->findChild<QComboBox*>("upAxisCombo");
+    QCOMPARE(up_axis->currentText(), QString("+z"));
+    // The keyboard picks the next axis: -z, as the original LineMOD meshes need.
+    up_axis->setFocus();
+    QTest::keyClick(up_axis, Qt::Key_Down);
+    QCOMPARE(up_axis->currentText(), QString("-z"));
+    QVERIFY(panel_->profile().views.upright_from_model.isApprox(UprightFromUpAxis("-z")));
+
+    panel_->findChild<QPushButton*>("fullPresetButton")->click();
+    const ViewSamplingOptions full = panel_->profile().views;
+    QCOMPARE(full.elevation.min_deg, -90.0);
+    QCOMPARE(full.roll.max_deg - full.roll.min_deg, 345.0);
+    QVERIFY(full.upright_from_model.isApprox(UprightFromUpAxis("-z")));  // kept by the preset
+    panel_->UpdatePlan();
+    const std::size_t full_templates = panel_->plan()->TemplateCount();
+    panel_->findChild<QPushButton*>("tabletopPresetButton")->click();
+    QCOMPARE(panel_->profile().views.elevation.min_deg, 0.0);
+    panel_->UpdatePlan();
+    QVERIFY(panel_->plan()->TemplateCount() * 6 < full_templates);
+
+    // A profile's rotation that is none of the six axes shows as tilted and is kept.
+    TrainingProfile tilted = panel_->profile();
+    tilted.views.upright_from_model = UprightFromUpDirection({0.3, -0.6, 0.74});
+    panel_->SetProfile(tilted);
+    QCOMPARE(up_axis->currentText(), QString("tilted"));
+    QVERIFY(panel_->profile().views.upright_from_model.isApprox(tilted.views.upright_from_model));
+    panel_->SetProfile(TinyProfile());
+    QCOMPARE(up_axis->currentText(), QString("+z"));
+    QCOMPARE(up_axis->findText("tilted"), -1);
   }
 
   void ObjectIdComesFromTheFileName() {
