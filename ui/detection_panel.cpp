@@ -237,6 +237,9 @@ QWidget* DetectionPanel::BuildResultsArea() {
   FillDetectionTable(table_, {});
   timings_->setObjectName("timingsLabel");
   timings_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  // Wraps rather than widening the window: its width would outlast the preview (QTabWidget takes
+  // the largest minimum of its pages) and push the docks past a laptop screen.
+  timings_->setWordWrap(true);
   auto* lower = new QWidget;
   auto* lower_layout = new QVBoxLayout(lower);
   lower_layout->setContentsMargins(0, 0, 0, 0);

@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -90,6 +91,27 @@ class DetectionPanelTest : public QObject {
                  text.contains("seen from -57 deg elevation"),
              qPrintable(text));
     QVERIFY(text.contains("obj 5: not in the template set"));
+  }
+
+  // The docks step aside for the preview and come back with the 3D view. The preview's minimum
+  // width outlasts it (a tab widget is as wide as its widest page), so it must leave the docks
+  // their room on a laptop screen, or the window grows past it when they return.
+  void BackFromThePreviewTheDocksStillFit() {
+    window_->resize(1280, 760);
+    QTest::qWait(50);
+    const int docks_px = window_->findChild<QDockWidget*>("ModelDock")->width() +
+                         window_->findChild<QDockWidget*>("ViewsDock")->width();
+    DetectionPanel* panel = window_->detection_panel();
+    QSignalSpy finished(panel, &DetectionPanel::DetectionFinished);
+    panel->OpenCapture({SyntheticCaptureFiles().bop_dir, 1, 0, {}, {}, {}});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QTest::qWait(50);
+    const int preview_min_px = window_->tabs()->minimumSizeHint().width();
+    QVERIFY2(preview_min_px + docks_px <= 1280,
+             qPrintable(QString("preview %1 px + docks %2 px").arg(preview_min_px).arg(docks_px)));
+    window_->tabs()->setCurrentIndex(0);
+    QTest::qWait(100);
+    QVERIFY(window_->width() <= 1280);
   }
 
   void EdgeBoundAndRefinementsReachTheDetectorAndPersist() {
