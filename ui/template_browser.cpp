@@ -106,23 +106,33 @@ QWidget* TemplateBrowser::BuildFilterRow() {
   layer_->setObjectName("layerFilter");
   elevation_min_ = AngleBox(-90, 90, -90, "elevationMinFilter");
   elevation_max_ = AngleBox(-90, 90, 90, "elevationMaxFilter");
+  azimuth_min_ = AngleBox(0, 360, 0, "azimuthMinFilter");
+  azimuth_max_ = AngleBox(0, 360, 360, "azimuthMaxFilter");
+  azimuth_min_->setToolTip(
+      tr("Azimuths from the first to the second box, counter-clockwise "
+         "(300 to 60 is the 120° around 0)"));
+  azimuth_max_->setToolTip(azimuth_min_->toolTip());
   roll_min_ = AngleBox(-180, 180, -180, "rollMinFilter");
   roll_max_ = AngleBox(-180, 180, 180, "rollMaxFilter");
   auto* row = new QWidget;
   auto* grid = new QGridLayout(row);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->addWidget(new QLabel(tr("Layer")), 0, 0);
-  grid->addWidget(layer_, 0, 1, 1, 3);
-  grid->addWidget(count_, 0, 4);
-  grid->addWidget(new QLabel(tr("Elevation")), 1, 0);
-  grid->addWidget(elevation_min_, 1, 1);
-  grid->addWidget(elevation_max_, 1, 2);
-  grid->addWidget(new QLabel(tr("Roll")), 1, 3, Qt::AlignRight);
-  grid->addWidget(roll_min_, 1, 4);
-  grid->addWidget(roll_max_, 1, 5);
+  grid->addWidget(layer_, 0, 1, 1, 4);
+  grid->addWidget(count_, 0, 5, 1, 4);
+  const std::pair<QString, std::pair<QDoubleSpinBox*, QDoubleSpinBox*>> ranges[] = {
+      {tr("Elev."), {elevation_min_, elevation_max_}},
+      {tr("Az."), {azimuth_min_, azimuth_max_}},
+      {tr("Roll"), {roll_min_, roll_max_}}};
+  for (int i = 0; i < 3; ++i) {
+    grid->addWidget(new QLabel(ranges[i].first), 1, 3 * i, Qt::AlignRight);
+    grid->addWidget(ranges[i].second.first, 1, 3 * i + 1);
+    grid->addWidget(ranges[i].second.second, 1, 3 * i + 2);
+  }
   connect(layer_, qOverload<int>(&QComboBox::currentIndexChanged), this,
           &TemplateBrowser::ApplyFilter);
-  for (QDoubleSpinBox* box : {elevation_min_, elevation_max_, roll_min_, roll_max_}) {
+  for (QDoubleSpinBox* box :
+       {elevation_min_, elevation_max_, azimuth_min_, azimuth_max_, roll_min_, roll_max_}) {
     box->setKeyboardTracking(false);
     connect(box, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
             &TemplateBrowser::ApplyFilter);
@@ -175,6 +185,8 @@ void TemplateBrowser::ApplyFilter() {
   filter.layer_index = layer_->currentData().isValid() ? layer_->currentData().toInt() : -1;
   filter.elevation_min_deg = elevation_min_->value();
   filter.elevation_max_deg = elevation_max_->value();
+  filter.azimuth_min_deg = azimuth_min_->value();
+  filter.azimuth_max_deg = azimuth_max_->value();
   filter.roll_min_deg = roll_min_->value();
   filter.roll_max_deg = roll_max_->value();
   model_->SetFilter(filter);

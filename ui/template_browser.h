@@ -47,6 +47,8 @@ class TemplateBrowser : public QWidget {
   QComboBox* layer_;
   QDoubleSpinBox* elevation_min_;
   QDoubleSpinBox* elevation_max_;
+  QDoubleSpinBox* azimuth_min_;
+  QDoubleSpinBox* azimuth_max_;
   QDoubleSpinBox* roll_min_;
   QDoubleSpinBox* roll_max_;
   QLabel* count_;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "ui/template_list_model.h"
 
+#include <cmath>
+
 #include <QColor>
 #include <algorithm>
 #include <exception>
@@ -44,6 +46,12 @@ QString Describe(const TemplateRecord& record) {
 bool TemplateFilter::Accepts(const TemplateRecord& record) const {
   constexpr double kEps = 1e-6;
   if (layer_index >= 0 && record.layer_index != layer_index) return false;
+  const double span = azimuth_max_deg - azimuth_min_deg;
+  if (span < 360.0 - kEps) {
+    const double from_min =
+        std::fmod(std::fmod(record.view.azimuth_deg - azimuth_min_deg, 360.0) + 360.0, 360.0);
+    if (from_min > std::fmod(span + 360.0, 360.0) + kEps) return false;
+  }
   return record.view.elevation_deg >= elevation_min_deg - kEps &&
          record.view.elevation_deg <= elevation_max_deg + kEps &&
          record.view.roll_deg >= roll_min_deg - kEps && record.view.roll_deg <= roll_max_deg + kEps;

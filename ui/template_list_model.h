@@ -19,6 +19,10 @@ struct TemplateFilter {
   int layer_index = -1;  // -1: every layer
   double elevation_min_deg = -90.0;
   double elevation_max_deg = 90.0;
+  // Azimuths from min to max going counter-clockwise, wrapping past 360 (300..60 is the 120
+  // degrees around 0).
+  double azimuth_min_deg = 0.0;
+  double azimuth_max_deg = 360.0;
   double roll_min_deg = -180.0;
   double roll_max_deg = 180.0;
 

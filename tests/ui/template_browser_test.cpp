@@ -7,6 +7,7 @@
 #include <QListView>
 #include <QSignalSpy>
 #include <QTest>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "pipeline/training.h"
@@ -106,6 +107,16 @@ class TemplateBrowserTest : public QObject {
       QVERIFY(list->RecordAt(row)->view.elevation_deg >= 45.0);
     }
     QCOMPARE(list->rowCount(), 4);  // elevation 60 only, four azimuths
+
+    // An azimuth range across 0: 300 to 60 degrees.
+    window_->browser()->findChild<QDoubleSpinBox*>("azimuthMinFilter")->setValue(300.0);
+    window_->browser()->findChild<QDoubleSpinBox*>("azimuthMaxFilter")->setValue(60.0);
+    QVERIFY(list->rowCount() >= 1 && list->rowCount() < 4);
+    for (int row = 0; row < list->rowCount(); ++row) {
+      const double azimuth = std::fmod(list->RecordAt(row)->view.azimuth_deg + 360.0, 360.0);
+      QVERIFY2(azimuth >= 300.0 - 1e-6 || azimuth <= 60.0 + 1e-6,
+               qPrintable(QString::number(azimuth)));
+    }
   }
 
   void ClickShowsTheTemplateAndItsCamera() {
