@@ -125,6 +125,46 @@ double HullSize(const ConvexHull& hull) {
   return (high - low).norm();
 }
 
+// The side of the face's polygon nearest to `point`, a point on or near its plane (the distance
+// off the plane is the same for every side, so it does not need projecting).
+std::size_t NearestSide(const HullFace& face, const Eigen::Vector3d& point) {
+  std::size_t nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  const std::size_t n = face.polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& a = face.polygon[i];
+    const Eigen::Vector3d ab = face.polygon[(i + 1) % n] - a;
+    const double along = std::clamp(ab.dot(point - a) / ab.squaredNorm(), 0.0, 1.0);
+    const double distance = (a + along * ab - point).squaredNorm();
+    if (distance < best) {
+      best = distance;
+      nearest = i;
+    }
+  }
+  return nearest;
+}
+
+// Each hull edge between two faces is put on the polygon side nearest to its midpoint: the
+// polygon is the hull of the face's corners, so its sides run along the face's border edges.
+void FindNeighbours(const ConvexHull& hull, const std::vector<std::array<int, 3>>& neighbours,
+                    const std::vector<std::vector<int>>& members, const std::vector<int>& face_of,
+                    std::vector<HullFace>& faces) {
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    HullFace& face = faces[f];
+    face.neighbours.assign(face.polygon.size(), {});
+    for (int t : members[f]) {
+      const auto& c = hull.triangles[t];
+      for (int i = 0; i < 3; ++i) {
+        const int across = neighbours[t][i] >= 0 ? face_of[neighbours[t][i]] : -1;
+        if (across < 0 || across == static_cast<int>(f)) continue;
+        const Eigen::Vector3d middle = 0.5 * (hull.vertices[c[i]] + hull.vertices[c[(i + 1) % 3]]);
+        std::vector<int>& side = face.neighbours[NearestSide(face, middle)];
+        if (std::find(side.begin(), side.end(), across) == side.end()) side.push_back(across);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<HullFace> MergeCoplanarTriangles(const ConvexHull& hull) {
@@ -142,6 +182,8 @@ std::vector<HullFace> MergeCoplanarTriangles(const ConvexHull& hull) {
                    [&](int a, int b) { return triangles[a].area > triangles[b].area; });
   std::vector<char> taken(triangles.size(), 0);
   std::vector<HullFace> faces;
+  std::vector<std::vector<int>> face_members;
+  std::vector<int> face_of(triangles.size(), -1);  // -1: in a face too thin to keep
   for (int seed : order) {
     if (taken[seed]) continue;
     const Eigen::Vector3d& normal = triangles[seed].normal;
@@ -163,8 +205,12 @@ std::vector<HullFace> MergeCoplanarTriangles(const ConvexHull& hull) {
       }
     }
     HullFace face = MakeFace(hull, triangles, members, hull_size);
-    if (face.polygon.size() >= 3) faces.push_back(std::move(face));
+    if (face.polygon.size() < 3) continue;
+    for (int t : members) face_of[t] = static_cast<int>(faces.size());
+    faces.push_back(std::move(face));
+    face_members.push_back(std::move(members));
   }
+  FindNeighbours(hull, neighbours, face_members, face_of, faces);
   return faces;
 }
 

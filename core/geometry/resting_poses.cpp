@@ -138,17 +138,109 @@ double FaceSolidAngle(const HullFace& face, const Eigen::Vector3d& eye) {
   return total;
 }
 
-// The distance from the centre of mass, dropped onto the face, to the nearest edge; negative
-// when it falls outside.
-double StabilityMargin(const HullFace& face, const Eigen::Vector3d& centre) {
-  double margin = std::numeric_limits<double>::infinity();
+struct Margin {
+  double distance_mm = 0.0;  // negative when the centre falls outside
+  std::size_t side = 0;      // of the polygon, from corner `side` to the next
+};
+
+// The distance from the centre of mass, dropped onto the face, to the nearest side, and that
+// side. When the centre falls outside, it is the side the centre is farthest beyond.
+Margin StabilityMargin(const HullFace& face, const Eigen::Vector3d& centre) {
+  Margin margin{std::numeric_limits<double>::infinity(), 0};
   for (std::size_t i = 0; i < face.polygon.size(); ++i) {
     const Eigen::Vector3d& from = face.polygon[i];
     const Eigen::Vector3d edge = face.polygon[(i + 1) % face.polygon.size()] - from;
     const Eigen::Vector3d inward = face.outward_normal.cross(edge).normalized();
-    margin = std::min(margin, inward.dot(centre - from));  // the normal part drops out
+    const double distance = inward.dot(centre - from);  // the normal part drops out
+    if (distance < margin.distance_mm) margin = {distance, i};
   }
   return margin;
+}
+
+// The face a part lying on `from` tips onto. It tips over the side the centre of mass is
+// farthest beyond (StabilityMargin): turning about a side lowers the centre at a rate equal to
+// that distance, so this is the way gravity's torque is largest, and it is the side nearest the
+// projected centre whenever that is nearest to a side rather than a corner. (The side crossed on
+// the way from the face's centroid to the projected centre would depend on the polygon's shape
+// far from where the part pivots.) While it turns about the side, the direction towards the
+// table sweeps from the face's normal towards the side's outward direction; the neighbour
+// normal it reaches first (the smallest turn) is the face that lands. -1 when `from` has no
+// neighbour.
+int FaceTippedOnto(const std::vector<HullFace>& faces, int from, std::size_t side) {
+  const HullFace& face = faces[from];
+  std::vector<int> candidates = face.neighbours[side];
+  if (candidates.empty()) {  // no hull edge was matched to that side: any neighbour
+    for (const std::vector<int>& across : face.neighbours) {
+      candidates.insert(candidates.end(), across.begin(), across.end());
+    }
+  }
+  const Eigen::Vector3d edge = face.polygon[(side + 1) % face.polygon.size()] - face.polygon[side];
+  const Eigen::Vector3d outward = edge.cross(face.outward_normal).normalized();
+  int onto = -1;
+  double smallest_turn = std::numeric_limits<double>::infinity();
+  for (int candidate : candidates) {
+    const Eigen::Vector3d& normal = faces[candidate].outward_normal;
+    double turn = std::atan2(normal.dot(outward), normal.dot(face.outward_normal));
+    if (turn < 0.0) turn += 2.0 * kPi;  // leans the other way: reached last
+    if (turn < smallest_turn) {
+      smallest_turn = turn;
+      onto = candidate;
+    }
+  }
+  return onto;
+}
+
+// A chain of tips this long is taken to be broken. The centre of mass drops with every tip, so a
+// real chain never revisits a face (a revisit is caught as well); the cap bounds the work should
+// rounding or a face's tolerance (kCoplanarAngleDeg) ever mislead the walk.
+constexpr std::size_t kMaxTips = 10'000;
+constexpr int kUnresolved = -1;
+constexpr int kOnChain = -2;
+
+// The stable face whose up direction is nearest to the face's: where a part is taken to end when
+// its chain of tips cannot be followed.
+int NearestStableFace(const std::vector<HullFace>& faces, const std::vector<char>& stable, int f) {
+  int nearest = kUnresolved;
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t g = 0; g < faces.size(); ++g) {
+    const double alignment = faces[g].outward_normal.dot(faces[f].outward_normal);
+    if (stable[g] && alignment > best) {
+      best = alignment;
+      nearest = static_cast<int>(g);
+    }
+  }
+  return nearest;
+}
+
+// For each face, the stable face a part that lands on it comes to rest on, by quasi-static
+// draining (Moll and Erdmann, "Manipulation of pose distributions", 2002): from an unstable face
+// it tips onto FaceTippedOnto, and so on. Chains share their ends, so this is linear in the faces.
+std::vector<int> RestingFaces(const std::vector<HullFace>& faces, const std::vector<char>& stable,
+                              const std::vector<int>& tipped_onto) {
+  std::vector<int> rests_on(faces.size(), kUnresolved);
+  std::vector<int> chain;
+  for (std::size_t start = 0; start < faces.size(); ++start) {
+    chain.clear();
+    int face = static_cast<int>(start);
+    int end = kUnresolved;
+    while (true) {
+      if (rests_on[face] >= 0) {
+        end = rests_on[face];
+        break;
+      }
+      if (stable[face]) {
+        end = face;
+        break;
+      }
+      if (rests_on[face] == kOnChain || tipped_onto[face] < 0 || chain.size() >= kMaxTips) break;
+      rests_on[face] = kOnChain;
+      chain.push_back(face);
+      face = tipped_onto[face];
+    }
+    for (int f : chain) rests_on[f] = end >= 0 ? end : NearestStableFace(faces, stable, f);
+    if (stable[start]) rests_on[start] = static_cast<int>(start);
+  }
+  return rests_on;
 }
 
 std::optional<std::string> AxisName(const Eigen::Vector3d& up_in_model) {
@@ -159,26 +251,69 @@ std::optional<std::string> AxisName(const Eigen::Vector3d& up_in_model) {
   return std::nullopt;
 }
 
+void SortMostLikelyFirst(std::vector<RestingPose>& poses) {
+  std::stable_sort(poses.begin(), poses.end(), [](const RestingPose& a, const RestingPose& b) {
+    return a.probability > b.probability;
+  });
+}
+
+// Poses within kAxisNameToleranceDeg of a more likely one, or named after the same axis, are one
+// pose: a scanned base is often several faces a degree or two apart, and a part set down on it
+// is the same way up whichever of them touches. The most likely keeps its direction and margins
+// and gets their summed probability. `poses` is most likely first.
+std::vector<RestingPose> GroupNearbyPoses(const std::vector<RestingPose>& poses) {
+  const double min_cos = std::cos(DegToRad(kAxisNameToleranceDeg));
+  std::vector<RestingPose> groups;
+  for (const RestingPose& pose : poses) {
+    const auto same = std::find_if(groups.begin(), groups.end(), [&](const RestingPose& group) {
+      return group.up_in_model.dot(pose.up_in_model) >= min_cos ||
+             (group.axis_name && group.axis_name == pose.axis_name);
+    });
+    if (same == groups.end()) {
+      groups.push_back(pose);
+    } else {
+      same->probability += pose.probability;
+    }
+  }
+  SortMostLikelyFirst(groups);
+  return groups;
+}
+
 std::vector<RestingPose> StablePoses(const std::vector<HullFace>& faces,
                                      const Eigen::Vector3d& centre, double min_margin) {
+  std::vector<double> solid_angles(faces.size());
+  std::vector<Margin> margins(faces.size());
+  std::vector<char> stable(faces.size());
   double total_angle = 0.0;
-  for (const HullFace& face : faces) total_angle += FaceSolidAngle(face, centre);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    solid_angles[f] = FaceSolidAngle(faces[f], centre);
+    total_angle += solid_angles[f];
+    margins[f] = StabilityMargin(faces[f], centre);
+    stable[f] = margins[f].distance_mm > min_margin;
+  }
+  std::vector<int> tipped_onto(faces.size(), kUnresolved);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (!stable[f]) tipped_onto[f] = FaceTippedOnto(faces, static_cast<int>(f), margins[f].side);
+  }
+  const std::vector<int> rests_on = RestingFaces(faces, stable, tipped_onto);
+  std::vector<double> drained(faces.size(), 0.0);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (rests_on[f] >= 0) drained[rests_on[f]] += solid_angles[f];
+  }
   std::vector<RestingPose> poses;
-  for (const HullFace& face : faces) {
-    const double margin = StabilityMargin(face, centre);
-    if (margin <= min_margin) continue;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (!stable[f]) continue;
+    const HullFace& face = faces[f];
     RestingPose pose;
     pose.up_in_model = -face.outward_normal;
-    pose.probability = FaceSolidAngle(face, centre) / total_angle;
-    pose.stability_margin_mm = margin;
+    pose.probability = drained[f] / total_angle;
+    pose.stability_margin_mm = margins[f].distance_mm;
     pose.height_mm = face.plane_offset - face.outward_normal.dot(centre);
     pose.axis_name = AxisName(pose.up_in_model);
     poses.push_back(std::move(pose));
   }
-  std::stable_sort(poses.begin(), poses.end(), [](const RestingPose& a, const RestingPose& b) {
-    return a.probability > b.probability;
-  });
-  return poses;
+  SortMostLikelyFirst(poses);
+  return GroupNearbyPoses(poses);
 }
 
 }  // namespace

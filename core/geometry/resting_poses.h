@@ -15,9 +15,11 @@ namespace layermod {
 // A stable pose: the part lies on a hull face and its centre of mass is above that face.
 struct RestingPose {
   Eigen::Vector3d up_in_model = Eigen::Vector3d::UnitZ();  // unit; minus the face's outward normal
-  // The share of the directions from the centre of mass that pass through the face (its solid
-  // angle over the whole sphere): how often a part dropped in a random orientation lands on it
-  // (the quasi-static estimate of Goldberg et al., "Part pose statistics", 1999).
+  // How often a part dropped in a random orientation comes to rest this way up: the solid angle,
+  // seen from the centre of mass, of this face and of the unstable faces from which a part tips
+  // onto it (quasi-static draining; Goldberg et al., "Part pose statistics", 1999), over the whole
+  // sphere. Stable faces within kAxisNameToleranceDeg of each other are one pose: their shares
+  // add up, and the direction, margin and height are the likeliest face's.
   double probability = 0.0;
   double stability_margin_mm = 0.0;  // centre of mass, projected on the face, to its nearest edge
   double height_mm = 0.0;            // of the centre of mass above the face
@@ -25,9 +27,9 @@ struct RestingPose {
 };
 
 struct RestingPoses {
-  // The stable faces, most likely first; empty when the mesh spans no volume. Their
-  // probabilities sum to at most 1: the rest is the share of the unstable faces, from which a
-  // part tips onto a neighbour (which one depends on how it falls).
+  // The stable faces, most likely first, none twice along one axis; empty when the mesh spans no
+  // volume. Their probabilities sum to 1: a part that lands on an unstable face tips onto a
+  // stable one.
   std::vector<RestingPose> poses;
   Eigen::Vector3d centre_of_mass = Eigen::Vector3d::Zero();  // model frame
   // True: the centre of the solid the mesh encloses (uniform density). False: the mesh is open

@@ -54,6 +54,22 @@ TEST(HullFacesTest, ABoxHasSixRectangles) {
   EXPECT_NEAR(total_area, 2.0 * (100 * 60 + 100 * 20 + 60 * 20), 1e-6);
 }
 
+// Across each side of a box's rectangle lies the face that side's outward direction points at.
+TEST(HullFacesTest, EachSideKnowsTheFaceAcrossIt) {
+  const std::vector<HullFace> faces = MergeCoplanarTriangles(ComputeConvexHull(GriddedBox()));
+  ASSERT_EQ(faces.size(), 6u);
+  for (const HullFace& face : faces) {
+    ASSERT_EQ(face.neighbours.size(), face.polygon.size());
+    for (std::size_t i = 0; i < face.polygon.size(); ++i) {
+      SCOPED_TRACE(i);
+      ASSERT_EQ(face.neighbours[i].size(), 1u);
+      const Eigen::Vector3d edge = face.polygon[(i + 1) % face.polygon.size()] - face.polygon[i];
+      const Eigen::Vector3d outward = edge.cross(face.outward_normal).normalized();
+      EXPECT_NEAR(faces[face.neighbours[i][0]].outward_normal.dot(outward), 1.0, 1e-12);
+    }
+  }
+}
+
 // A prism over a regular 64-gon: its sides turn by 5.6 degrees, far more than the tolerance.
 TEST(HullFacesTest, AFacetedCylinderKeepsItsSidesApart) {
   std::vector<Eigen::Vector3d> points;
@@ -69,6 +85,10 @@ TEST(HullFacesTest, AFacetedCylinderKeepsItsSidesApart) {
     if (std::abs(face.outward_normal.z()) > 0.5) {
       ++caps;
       EXPECT_EQ(face.polygon.size(), 64u);
+      for (const std::vector<int>& across : face.neighbours) {
+        ASSERT_EQ(across.size(), 1u);
+        EXPECT_LT(std::abs(faces[across[0]].outward_normal.z()), 1e-9);  // a side, not a cap
+      }
     } else {
       EXPECT_EQ(face.polygon.size(), 4u);
     }

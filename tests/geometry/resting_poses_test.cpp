@@ -48,6 +48,27 @@ RestingPoses Rest(const TriangleMesh& mesh) {
   return FindRestingPoses(mesh.vertices, mesh.triangles);
 }
 
+// The share of the directions from `eye` that pass through a convex polygon (a fan of Van
+// Oosterom and Strackee's triangles, over the whole sphere).
+double Share(const std::vector<Eigen::Vector3d>& polygon, const Eigen::Vector3d& eye) {
+  double solid_angle = 0.0;
+  const Eigen::Vector3d a = polygon[0] - eye;
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+    const Eigen::Vector3d b = polygon[i] - eye;
+    const Eigen::Vector3d c = polygon[i + 1] - eye;
+    const double denominator = a.norm() * b.norm() * c.norm() + a.dot(b) * c.norm() +
+                               a.dot(c) * b.norm() + b.dot(c) * a.norm();
+    solid_angle += std::abs(2.0 * std::atan2(a.dot(b.cross(c)), denominator));
+  }
+  return solid_angle / (4.0 * kPi);
+}
+
+double TotalProbability(const RestingPoses& rest) {
+  double total = 0.0;
+  for (const RestingPose& pose : rest.poses) total += pose.probability;
+  return total;
+}
+
 const RestingPose* PoseWithUp(const RestingPoses& rest, const Eigen::Vector3d& up) {
   for (const RestingPose& pose : rest.poses) {
     if (pose.up_in_model.isApprox(up, 1e-9)) return &pose;
@@ -91,18 +112,94 @@ TEST(RestingPosesTest, ABoxRestsMostOftenOnItsLargestSides) {
 // top faces, so it cannot stand on either; it lies on its sides.
 TEST(RestingPosesTest, AFaceTheCentreOfMassIsNotAboveIsNotOffered) {
   const RestingPoses rest = Rest(Box({10, 10, 10}, Eigen::Vector3d::Zero(), 3.0));
-  EXPECT_THAT(rest.centre_of_mass, MatrixNear(Eigen::Vector3d(20, 5, 5), 1e-9));
+  const Eigen::Vector3d& centre = rest.centre_of_mass;
+  EXPECT_THAT(centre, MatrixNear(Eigen::Vector3d(20, 5, 5), 1e-9));
   ASSERT_EQ(rest.poses.size(), 4u);
-  double total = 0.0;
   for (const RestingPose& pose : rest.poses) {
     EXPECT_LT(std::abs(pose.up_in_model.z()), 0.99) << "stands on its bottom or top";
     EXPECT_GT(pose.stability_margin_mm, 1.0);
-    total += pose.probability;
   }
-  EXPECT_LT(total, 0.99);  // the rest is the share of the two faces it tips off
+  EXPECT_NEAR(TotalProbability(rest), 1.0, 1e-9);
   const RestingPose* side = PoseWithUp(rest, Eigen::Vector3d::UnitY());
   ASSERT_NE(side, nullptr);
   EXPECT_NEAR(side->stability_margin_mm, 5.0 / std::sqrt(10.0), 1e-9);  // to the leaning edges
+  // Off the bottom it tips over the edge at x = 10 onto the side x - 3z = 10, which gets both
+  // shares; off the top onto the opposite side.
+  const RestingPose* onto = PoseWithUp(rest, Eigen::Vector3d(-1, 0, 3).normalized());
+  ASSERT_NE(onto, nullptr);
+  const double lean = Share({{10, 0, 0}, {40, 0, 10}, {40, 10, 10}, {10, 10, 0}}, centre);
+  const double bottom = Share({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}}, centre);
+  EXPECT_NEAR(onto->probability, lean + bottom, 1e-9);
+  const RestingPose* opposite = PoseWithUp(rest, Eigen::Vector3d(1, 0, -3).normalized());
+  ASSERT_NE(opposite, nullptr);
+  EXPECT_NEAR(opposite->probability, onto->probability, 1e-9);
+}
+
+// A 100 x 60 x 20 box with the edge between its top and its +y side cut off at 45 degrees: the
+// centre of mass, dropped onto the cut, is beyond the cut's edge with the top, so a part that
+// lands on the cut tips onto its top, and lying on the top gets the cut's share as well.
+TEST(RestingPosesTest, APartTipsOffAnUnstableFaceOntoItsNeighbour) {
+  const std::vector<Eigen::Vector3d> corners = {
+      {0, 0, 0},    {100, 0, 0}, {0, 60, 0},    {100, 60, 0}, {0, 0, 20},
+      {100, 0, 20}, {0, 55, 20}, {100, 55, 20}, {0, 60, 15},  {100, 60, 15}};
+  const RestingPoses rest = FindRestingPoses(corners, {});  // convex: the hull's centre is right
+  const Eigen::Vector3d& centre = rest.centre_of_mass;
+  ASSERT_EQ(rest.poses.size(), 6u);
+  EXPECT_EQ(PoseWithUp(rest, Eigen::Vector3d(0, -1, -1).normalized()), nullptr);
+  const double cut = Share({{0, 55, 20}, {100, 55, 20}, {100, 60, 15}, {0, 60, 15}}, centre);
+  const double top = Share({{0, 0, 20}, {100, 0, 20}, {100, 55, 20}, {0, 55, 20}}, centre);
+  const double bottom = Share({{0, 0, 0}, {100, 0, 0}, {100, 60, 0}, {0, 60, 0}}, centre);
+  EXPECT_GT(cut, 0.01);
+  const RestingPose* on_top = PoseWithUp(rest, -Eigen::Vector3d::UnitZ());
+  const RestingPose* on_bottom = PoseWithUp(rest, Eigen::Vector3d::UnitZ());
+  ASSERT_NE(on_top, nullptr);
+  ASSERT_NE(on_bottom, nullptr);
+  EXPECT_NEAR(on_top->probability, top + cut, 1e-9);
+  EXPECT_NEAR(on_bottom->probability, bottom, 1e-9);
+  EXPECT_NEAR(TotalProbability(rest), 1.0, 1e-9);
+}
+
+// A box standing on two halves of a base that meet in a ridge along y, each tilted from flat: it
+// rocks on either, and both are one pose with both shares. At 4 degrees each way both are named
+// "+z" (8 degrees apart); at 2 degrees, turned 30 degrees away from any axis, they are unnamed
+// but within kAxisNameToleranceDeg of each other.
+TEST(RestingPosesTest, NearbyFacesAreOnePose) {
+  for (const auto& [tilt_deg, turn_deg] : {std::pair{4.0, 0.0}, std::pair{2.0, 30.0}}) {
+    SCOPED_TRACE(tilt_deg);
+    const double drop = 50.0 * std::tan(DegToRad(tilt_deg));
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(DegToRad(turn_deg), Eigen::Vector3d::UnitY()).toRotationMatrix();
+    std::vector<Eigen::Vector3d> corners = {
+        {0, 0, 0},   {0, 60, 0},   {100, 0, 0},   {100, 60, 0},   {0, 0, 20},
+        {0, 60, 20}, {100, 0, 20}, {100, 60, 20}, {50, 0, -drop}, {50, 60, -drop}};
+    for (Eigen::Vector3d& p : corners) p = turn * p;
+    const RestingPoses rest = FindRestingPoses(corners, {});
+    const Eigen::Vector3d up = turn * Eigen::Vector3d::UnitZ();
+    const RestingPose* base = nullptr;
+    int near_up = 0;
+    for (const RestingPose& pose : rest.poses) {
+      if (pose.up_in_model.dot(up) > std::cos(DegToRad(2.0 * tilt_deg))) {
+        ++near_up;
+        base = &pose;
+      }
+    }
+    ASSERT_EQ(near_up, 1);
+    EXPECT_EQ(base->axis_name.has_value(), turn_deg == 0.0);
+    EXPECT_NEAR(std::abs(base->up_in_model.dot(turn * Eigen::Vector3d::UnitX())),
+                std::sin(DegToRad(tilt_deg)), 1e-9);  // one half's direction, not their mean
+    const Eigen::Vector3d& centre = rest.centre_of_mass;
+    const double left =
+        Share({turn * Eigen::Vector3d(0, 0, 0), turn * Eigen::Vector3d(50, 0, -drop),
+               turn * Eigen::Vector3d(50, 60, -drop), turn * Eigen::Vector3d(0, 60, 0)},
+              centre);
+    const double right =
+        Share({turn * Eigen::Vector3d(50, 0, -drop), turn * Eigen::Vector3d(100, 0, 0),
+               turn * Eigen::Vector3d(100, 60, 0), turn * Eigen::Vector3d(50, 60, -drop)},
+              centre);
+    EXPECT_NEAR(base->probability, left + right, 1e-9);
+    EXPECT_EQ(rest.poses.size(), 6u);
+    EXPECT_NEAR(TotalProbability(rest), 1.0, 1e-9);
+  }
 }
 
 // Two separate boxes, one twice the other: the solid's centre of mass is not its hull's.
