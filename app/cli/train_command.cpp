@@ -2,15 +2,19 @@
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "cli/progress_bar.h"
 #include "dataset/bop_json.h"
+#include "geometry/resting_poses.h"
 #include "geometry/units.h"
 #include "geometry/up_axis.h"
 #include "mesh/model.h"
+#include "mesh/model_resting_poses.h"
 #include "pipeline/training.h"
 #include "templates/archive.h"
 #include "util/atomic_file.h"
@@ -19,6 +23,11 @@
 
 namespace layermod::cli {
 namespace {
+
+// The dry run lists this many resting poses at most, and none rarer than this: the slivers of a
+// faceted surface would bury the few poses worth choosing.
+constexpr std::size_t kListedRestingPoses = 5;
+constexpr double kListedRestProbability = 0.01;
 
 struct TrainArgs {
   bool dry_run = false;
@@ -98,14 +107,55 @@ std::string UpAxisText(const Eigen::Matrix3d& upright_from_model) {
   return UpAxisName(upright_from_model).value_or(text);
 }
 
+std::string PercentText(double probability) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f %%", 100.0 * probability);
+  return text;
+}
+
+// "+z 41 %, -z 22 %, tilted (0.12, -0.70, 0.70) 6 %".
+std::string RestingPosesText(const RestingPoses& rest) {
+  if (rest.poses.empty()) return "none (the mesh encloses no volume)";
+  std::string text;
+  for (std::size_t i = 0; i < rest.poses.size() && i < kListedRestingPoses; ++i) {
+    const RestingPose& pose = rest.poses[i];
+    if (pose.probability < kListedRestProbability) break;  // most likely first
+    if (!text.empty()) text += ", ";
+    text += RestingPoseName(pose) + " " + PercentText(pose.probability);
+  }
+  if (text.empty()) text = "none above " + PercentText(kListedRestProbability);
+  if (!rest.from_closed_mesh) text += " (mesh not closed: centre of mass of its hull)";
+  return text;
+}
+
+// The view envelope is measured from the up axis, so one the part does not rest on is usually a
+// mistake; only a warning, as a part held in a gripper can be trained any way up.
+void WarnIfUpAxisIsNoRestingPose(const RestingPoses& rest, const Eigen::Matrix3d& upright,
+                                 const Model& model) {
+  const std::vector<RestingPose> likely = LikelyRestingPoses(rest);
+  if (likely.empty() || IsLikelyRestingUp(rest, upright)) return;
+  std::string suggested;
+  for (std::size_t i = 0; i < likely.size() && i < kListedRestingPoses; ++i) {
+    if (!suggested.empty()) suggested += ", ";
+    suggested += RestingPoseName(likely[i]) + " (" + PercentText(likely[i].probability) + ")";
+  }
+  const std::optional<RestingPose> along = RestingPoseAlong(rest, upright);
+  const std::string how = along ? "is a rare resting pose (" + PercentText(along->probability) + ")"
+                                : "is not a stable resting pose";
+  std::fprintf(stderr, "layermod: warning: up axis %s %s of %s; it rests most likely on %s\n",
+               UpAxisText(upright).c_str(), how.c_str(), model.source.filename().string().c_str(),
+               suggested.c_str());
+}
+
 // The plan alone: what a run would make, and roughly how much memory it takes.
-void PrintPlan(const TrainingPlan& plan, const TrainingRequest& request) {
+void PrintPlan(const TrainingPlan& plan, const TrainingRequest& request, const RestingPoses& rest) {
   std::printf("radius        %.2f mm (diameter %.2f mm)\n", plan.radius_mm, 2.0 * plan.radius_mm);
   std::printf("depth layers  %zu:", plan.layer_depths_mm.size());
   for (double depth_mm : plan.layer_depths_mm) std::printf(" %.0f", depth_mm);
   std::printf(" mm\n");
   std::printf("views         %zu per layer\n", plan.views.size());
   std::printf("up axis       %s\n", UpAxisText(request.profile.views.upright_from_model).c_str());
+  std::printf("resting poses %s\n", RestingPosesText(rest).c_str());
   std::printf("templates     %zu\n", plan.TemplateCount());
   std::printf("memory        about %.1f MiB for the templates\n",
               static_cast<double>(plan.EstimatedBytes(request.profile.features)) / (1 << 20));
@@ -127,8 +177,10 @@ void RunTrain(const TrainArgs& args) {
   const Model model = LoadModel(args.model, load_options);
   if (request.name.empty()) request.name = model.source.stem().string();
   const TrainingPlan plan = PlanTraining(model, request);
+  const RestingPoses rest = SuggestRestingPoses(model);
+  WarnIfUpAxisIsNoRestingPose(rest, request.profile.views.upright_from_model, model);
   if (args.dry_run) {
-    PrintPlan(plan, request);
+    PrintPlan(plan, request, rest);
     return;
   }
   // Ctrl-C is caught from here on: it cancels the job and nothing is written.
@@ -197,8 +249,10 @@ void AddTrainCommand(CLI::App& app) {
   command->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--out", args->out, "Output archive (*.layermod)");
-  command->add_flag("--dry-run", args->dry_run,
-                    "Print the plan (layers, views, templates, memory) and stop; no --out needed");
+  command->add_flag(
+      "--dry-run", args->dry_run,
+      "Print the plan (layers, views, resting poses, templates, memory) and stop; no --out "
+      "needed");
   command->callback([args] { RunTrain(*args); });
 }
 
