@@ -12,6 +12,7 @@
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStringList>
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -21,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/up_axis.h"
+#include "mesh/model_resting_poses.h"
 #include "ui/camera_form.h"
 #include "ui/object_form.h"
 #include "ui/studio_dialogs.h"
@@ -184,13 +186,24 @@ QWidget* ViewsPanel::BuildOrientationBox() {
   full->setToolTip(
       tr("Any orientation (bin picking): the whole view sphere, roll all round; about 7× the "
          "templates of tabletop"));
+  resting_ = new QLabel;
+  resting_->setObjectName("restingPosesLabel");
+  resting_->setWordWrap(true);
+  resting_->setToolTip(
+      tr("How the part comes to rest when put down, from its convex hull and centre of mass "
+         "(the share of random drops). Click one to make it the up axis."));
+  connect(resting_, &QLabel::linkActivated, this,
+          [this](const QString& index) { UseRestingPose(index.toInt()); });
   auto* box = new QGroupBox(tr("Orientation and views preset"));
-  auto* row = new QHBoxLayout(box);
+  auto* row = new QHBoxLayout;
   row->addWidget(new QLabel(tr("Up")));
   row->addWidget(up_axis_);
   row->addSpacing(8);
   row->addWidget(tabletop, 1);
   row->addWidget(full, 1);
+  auto* column = new QVBoxLayout(box);
+  column->addLayout(row);
+  column->addWidget(resting_);
   connect(up_axis_, qOverload<int>(&QComboBox::activated), this, [this] {
     const QString name = up_axis_->currentText();
     if (UpAxisNames().end() ==
@@ -202,6 +215,34 @@ QWidget* ViewsPanel::BuildOrientationBox() {
   connect(tabletop, &QPushButton::clicked, this, [this] { ApplyViewPreset("tabletop"); });
   connect(full, &QPushButton::clicked, this, [this] { ApplyViewPreset("full"); });
   return box;
+}
+
+void ViewsPanel::UseRestingPose(int index) {
+  if (index < 0 || index >= static_cast<int>(resting_poses_.size())) return;
+  const RestingPose& pose = resting_poses_[static_cast<std::size_t>(index)];
+  SetUpright(pose.axis_name ? UprightFromUpAxis(*pose.axis_name)
+                            : UprightFromUpDirection(pose.up_in_model));
+}
+
+void ViewsPanel::ShowRestingPoses() {
+  if (resting_poses_.empty()) {
+    resting_->setText(session_->model() == nullptr ? QString() : tr("Rests on: no stable face"));
+    return;
+  }
+  QStringList links;
+  for (std::size_t i = 0; i < resting_poses_.size(); ++i) {
+    links << QStringLiteral("<a href='%1'>%2</a> %3 %")
+                 .arg(i)
+                 .arg(QString::fromStdString(RestingPoseName(resting_poses_[i])).toHtmlEscaped())
+                 .arg(100.0 * resting_poses_[i].probability, 0, 'f', 0);
+  }
+  QString text = tr("Rests on: %1").arg(links.join(" · "));
+  if (!IsLikelyRestingUp(resting_all_, profile().views.upright_from_model)) {
+    text +=
+        tr("<br><span style='color:#b26a00'>The part rarely rests this way up; views are "
+           "measured from this axis anyway (right for a part held in a gripper).</span>");
+  }
+  resting_->setText(text);
 }
 
 void ViewsPanel::SetUpright(const Eigen::Matrix3d& upright_from_model) {
@@ -353,14 +394,19 @@ void ViewsPanel::SetLocked(bool locked) {
 }
 
 void ViewsPanel::OnModelChanged() {
+  resting_all_ = {};
   if (const auto model = session_->model()) {
     object_->DefaultFromMesh(QString::fromStdString(model->source.string()));
+    resting_all_ = SuggestRestingPoses(*model);  // milliseconds, even for scanned meshes
   }
+  resting_poses_ = LikelyRestingPoses(resting_all_);
+  ShowRestingPoses();
   UpdatePlan();
 }
 
 void ViewsPanel::ScheduleUpdate() {
   ShowUnusedGridBoxes();
+  ShowRestingPoses();
   debounce_->start();
 }
 

@@ -4,6 +4,7 @@
 #include <QWidget>
 #include <optional>
 
+#include "geometry/resting_poses.h"
 #include "pipeline/training.h"
 
 class QComboBox;
@@ -30,9 +31,13 @@ class ViewsPanel : public QWidget {
   void SetProfile(const TrainingProfile& profile);
   PinholeCamera camera() const;
   void SetCamera(const PinholeCamera& camera);
+  // The model's likely resting poses, most likely first (empty without a model).
+  const std::vector<RestingPose>& resting_poses() const { return resting_poses_; }
   // Object id and name from the form (defaulted from the mesh file name).
   TrainingRequest request() const;
   void SetObject(std::int32_t obj_id, const QString& name);
+  // The up axis the view angles are measured from (the rest of the profile is kept).
+  void SetUpright(const Eigen::Matrix3d& upright_from_model);
   // While a run trains, the form cannot change (the run uses the values it started with).
   void SetLocked(bool locked);
   bool locked() const { return locked_; }
@@ -61,9 +66,10 @@ class ViewsPanel : public QWidget {
   QWidget* BuildDepthBox();
   QWidget* BuildOrientationBox();
   QWidget* BuildViewsBox();
-  void SetUpright(const Eigen::Matrix3d& upright_from_model);
   void ApplyViewPreset(const std::string& name);
   void ShowUpAxis(const Eigen::Matrix3d& upright_from_model);
+  void UseRestingPose(int index);  // of resting_poses_
+  void ShowRestingPoses();
   QWidget* BuildFeaturesBox();
   void OnModelChanged();
   void ScheduleUpdate();
@@ -75,7 +81,10 @@ class ViewsPanel : public QWidget {
   QDoubleSpinBox* depth_min_;
   QDoubleSpinBox* depth_max_;
   QComboBox* up_axis_;
-  QDoubleSpinBox* angles_[3][3];  // [azimuth, elevation, roll][min, step, max]
+  QLabel* resting_;
+  RestingPoses resting_all_;                // of the session's model
+  std::vector<RestingPose> resting_poses_;  // the likely ones, offered as links
+  QDoubleSpinBox* angles_[3][3];            // [azimuth, elevation, roll][min, step, max]
   QDoubleSpinBox* even_spacing_;
   QSpinBox* color_features_;
   QSpinBox* normal_features_;

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
+#include <cmath>
+
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QLocale>
 #include <QPushButton>
 #include <QSpinBox>
@@ -148,6 +151,28 @@ class ViewsPanelTest : public QObject {
     panel_->SetProfile(TinyProfile());
     QCOMPARE(up_axis->currentText(), QString("+z"));
     QCOMPARE(up_axis->findText("tilted"), -1);
+  }
+
+  // The bracket rests most likely on its base (+z); the panel offers its resting poses as links
+  // and says when the chosen up axis is not one of them.
+  void RestingPosesAreOfferedAsUpAxes() {
+    auto* label = panel_->findChild<QLabel*>("restingPosesLabel");
+    session_->SetModel(model_);
+    QVERIFY(!panel_->resting_poses().empty());
+    QCOMPARE(panel_->resting_poses().front().axis_name.value_or(""), std::string("+z"));
+    QVERIFY2(label->text().contains(">+z</a>"), qPrintable(label->text()));
+    QVERIFY(!label->text().contains("rarely rests"));
+    panel_->SetUpright(UprightFromUpAxis("-z"));  // not a way the bracket lies
+    QVERIFY2(label->text().contains("rarely rests"), qPrintable(label->text()));
+    // A link makes that pose the up axis.
+    for (int i = 0; i < static_cast<int>(panel_->resting_poses().size()); ++i) {
+      emit label->linkActivated(QString::number(i));
+      const Eigen::Vector3d up = UpDirectionInModel(panel_->profile().views.upright_from_model);
+      // Exactly the pose's direction, or the axis it is named after (within 5 degrees).
+      QVERIFY(up.dot(panel_->resting_poses()[static_cast<std::size_t>(i)].up_in_model) >
+              std::cos(5.01 * 3.14159265358979 / 180.0));
+      QVERIFY(!label->text().contains("rarely rests"));
+    }
   }
 
   void ObjectIdComesFromTheFileName() {
