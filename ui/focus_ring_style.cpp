@@ -36,7 +36,9 @@ void FocusRingStyle::drawPrimitive(PrimitiveElement element, const QStyleOption*
     return;
   }
   QProxyStyle::drawPrimitive(element, option, painter, widget);
-  if (element == PE_FrameLineEdit && HasFocus(*option)) DrawRing(*option, painter);
+  if ((element == PE_FrameLineEdit || element == PE_PanelButtonCommand) && HasFocus(*option)) {
+    DrawRing(*option, painter);
+  }
 }
 
 void FocusRingStyle::drawComplexControl(ComplexControl control, const QStyleOptionComplex* option,
