@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cstdlib>
+#include <vector>
 
 #include "pipeline/overlays.h"
 
@@ -14,6 +15,7 @@ namespace {
 constexpr int kLabelGapXPx = 90;
 constexpr int kLabelGapYPx = 16;
 constexpr std::size_t kMaxMatchLabels = 6;
+constexpr int kPoseLabelWidthPx = 260;
 // DrawRegionDivision's legend: one 18 px line per layer from y = 6.
 constexpr int kLayerLegendLinePx = 18;
 constexpr int kLayerLegendTopPx = 6;
@@ -32,9 +34,25 @@ void KeepDrawnPixels(const cv::Mat& drawn, const cv::Mat& base, cv::Mat& canvas)
   drawn.copyTo(canvas, DrawnMask(drawn, base));
 }
 
-// The best matches whose labels do not overlap a better one's, at most kMaxMatchLabels: the
-// detector keeps several matches per location (NMS), and their labels would pile up.
-ObjectDiagnostics MatchesWithSeparateLabels(const ObjectDiagnostics& diagnostics) {
+// Where DrawPoses writes each detection's label ("bracket 96.0% conf 0.98", right of and above
+// the projected sphere centre), with room for a long object name.
+std::vector<cv::Rect> PoseLabelBoxes(const DetectionResult& result, const Detector& detector,
+                                     const PinholeCamera& camera) {
+  std::vector<cv::Rect> boxes;
+  for (const Detection& detection : result.detections) {
+    const Eigen::Vector2d centre =
+        camera.Project(detection.cam_from_model * detector.Object(detection.obj_id).sphere.centre);
+    boxes.emplace_back(static_cast<int>(centre.x()) + 8, static_cast<int>(centre.y()) - 24,
+                       kPoseLabelWidthPx, 20);
+  }
+  return boxes;
+}
+
+// The best matches whose labels overlap neither a better one's nor a pose label (`reserved`), at
+// most kMaxMatchLabels: the detector keeps several matches per location (NMS), and their labels
+// would pile up.
+ObjectDiagnostics MatchesWithSeparateLabels(const ObjectDiagnostics& diagnostics,
+                                            const std::vector<cv::Rect>& reserved) {
   ObjectDiagnostics kept;
   kept.obj_id = diagnostics.obj_id;
   for (const RawMatch& match : diagnostics.matches) {
@@ -43,6 +61,8 @@ ObjectDiagnostics MatchesWithSeparateLabels(const ObjectDiagnostics& diagnostics
       overlaps = overlaps || (std::abs(match.x - other.x) < kLabelGapXPx &&
                               std::abs(match.y - other.y) < kLabelGapYPx);
     }
+    const cv::Rect label(match.x, match.y - kLabelGapYPx - 4, kLabelGapXPx, kLabelGapYPx);
+    for (const cv::Rect& box : reserved) overlaps = overlaps || (label & box).area() > 0;
     if (!overlaps) kept.matches.push_back(match);
     if (kept.matches.size() == kMaxMatchLabels) break;
   }
@@ -75,6 +95,8 @@ cv::Mat ComposeDetectionOverlays(const Capture& capture, const DetectionResult& 
   // The stage pictures dim the image the same way; an empty match list gives just that.
   const cv::Mat dimmed = DrawMatches(color, ObjectDiagnostics{}, *detector.archives().front());
   cv::Mat canvas = toggles.any_stage() ? dimmed.clone() : color.clone();
+  const std::vector<cv::Rect> pose_labels =
+      toggles.poses ? PoseLabelBoxes(result, detector, capture.camera) : std::vector<cv::Rect>{};
   for (const ObjectDiagnostics& diagnostics : result.diagnostics) {
     const bool has_division = !diagnostics.division.blocks.empty();
     const ArchiveObject& object = detector.Object(diagnostics.obj_id);
@@ -88,7 +110,7 @@ cv::Mat ComposeDetectionOverlays(const Capture& capture, const DetectionResult& 
       KeepCoarsePixels(color, diagnostics, dimmed, shift_px, canvas);
     }
     if (toggles.matches) {
-      KeepDrawnPixels(DrawMatches(color, MatchesWithSeparateLabels(diagnostics),
+      KeepDrawnPixels(DrawMatches(color, MatchesWithSeparateLabels(diagnostics, pose_labels),
                                   detector.ArchiveOf(diagnostics.obj_id)),
                       dimmed, canvas);
     }
