@@ -86,12 +86,16 @@ class UpAxisDetectionTest : public ::testing::Test {
     std::vector<Eigen::Vector3d> points;
     for (const Eigen::Vector3f& vertex : object.mesh.positions)
       points.push_back(vertex.cast<double>());
+    // The best pose whatever its confidence: the question is whether templates from the right
+    // side exist, not whether a coarse test archive's poses verify above the default acceptance.
+    DetectorOptions options;
+    options.min_confidence = 0.0;
     int correct = 0;
     for (const BopScene& scene : ListBopScenes(scenes)) {
       for (int image_id : scene.image_ids) {
         const BopFrame frame = LoadBopFrame(scene, image_id);
         const DetectionResult result =
-            detector.Detect({frame.color, frame.depth_mm, frame.camera}, DetectorOptions{});
+            detector.Detect({frame.color, frame.depth_mm, frame.camera}, options);
         if (result.detections.empty()) continue;
         const double add_mm = AddErrorMm(points, result.detections.front().cam_from_model,
                                          frame.gt.front().cam_from_model);
@@ -112,9 +116,8 @@ TEST_F(UpAxisDetectionTest, MinusZUpPartIsFoundWithItsUpAxis) {
   const int from_below = CorrectPoses(Train("+z"), scenes);
   RecordProperty("correct_with_up_axis", with_up_axis);
   RecordProperty("correct_from_below", from_below);
-  // Measured 11 of 12 with the up axis (10 of 12 with seed 22) in the GCC Release build, 8 of
-  // 12 in the clang sanitizer build, 0 of 12 from below; 7 leaves room for compiler and
-  // platform differences in floating point, not for a regression.
+  // Measured 11 of 12 with the up axis (10 of 12 with seed 22), 0 of 12 from below; 7 leaves
+  // room for platform differences in floating point, not for a regression.
   EXPECT_GE(with_up_axis, 7) << with_up_axis << " of " << kScenes << " within ADD 0.1 d";
   EXPECT_LE(from_below, 2) << "from below: " << from_below;
 }
