@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "pipeline/detector_options.h"
+#include "ui/fold_header.h"
 #include "ui/studio_dialogs.h"
 
 namespace layermod::ui {
@@ -141,20 +142,10 @@ DetectionOptionsForm::DetectionOptionsForm(QWidget* parent) : QWidget(parent) {
 }
 
 QWidget* DetectionOptionsForm::AddGroup(const QString& title, bool open) {
-  auto* header = new QToolButton;
+  auto* body = new QWidget;
+  QToolButton* header = MakeFoldHeader(body, open);
   header->setText(title.left(1).toUpper() + title.mid(1));
   header->setObjectName(QStringLiteral("group_") + QString(title).replace(' ', '_'));
-  header->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-  header->setAutoRaise(true);
-  header->setCheckable(true);
-  header->setChecked(open);
-  header->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
-  auto* body = new QWidget;
-  body->setVisible(open);
-  connect(header, &QToolButton::toggled, body, [header, body](bool shown) {
-    header->setArrowType(shown ? Qt::DownArrow : Qt::RightArrow);
-    body->setVisible(shown);
-  });
   layout()->addWidget(header);
   layout()->addWidget(body);
   return body;

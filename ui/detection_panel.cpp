@@ -445,8 +445,13 @@ void DetectionPanel::RefreshImage() {
 
 void DetectionPanel::UpdateCoverage() {
   const auto archive = session_->archive();
-  coverage_ = archive == nullptr ? std::vector<GroundTruthCoverage>{}
-                                 : CheckGroundTruthCoverage(*archive, ground_truth_);
+  // Built once per template set, not once per frame stepped to.
+  if (archive != envelopes_archive_) {
+    envelopes_archive_ = archive;
+    envelopes_ = archive == nullptr ? ObjectEnvelopes{} : ObjectEnvelopes(*archive);
+  }
+  coverage_ =
+      archive == nullptr ? std::vector<GroundTruthCoverage>{} : envelopes_.Check(ground_truth_);
   coverage_label_->setText(CoverageHtml(coverage_));
   coverage_label_->setVisible(!coverage_.empty());
   emit CoverageChanged();

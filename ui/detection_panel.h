@@ -110,8 +110,10 @@ class DetectionPanel : public QWidget {
   JobRunner* runner_;
   std::vector<std::function<bool()>> pending_;
   CaptureSource source_;
-  std::vector<int> frame_ids_;                // of the loaded BOP scene
-  std::vector<BopGroundTruth> ground_truth_;  // of the loaded BOP frame
+  std::vector<int> frame_ids_;                                // of the loaded BOP scene
+  std::vector<BopGroundTruth> ground_truth_;                  // of the loaded BOP frame
+  std::shared_ptr<const TemplateArchive> envelopes_archive_;  // what envelopes_ describes
+  ObjectEnvelopes envelopes_;
   std::vector<GroundTruthCoverage> coverage_;
   // The capture to load next; a newer request replaces it (fast frame stepping loads the last).
   std::optional<CaptureSource> queued_capture_;

@@ -180,10 +180,14 @@ vtkSmartPointer<vtkAxesActor> MakeAxesActor(double length_mm) {
   return axes;
 }
 
+double ShellRadiusMm(const Sphere& sphere, double depth_mm, double nearest_depth_mm) {
+  return kNearestShellRadii * sphere.radius * depth_mm / nearest_depth_mm;
+}
+
 Eigen::Vector3d GlyphPosition(const Sphere& sphere, const Eigen::Matrix3d& upright_from_model,
                               const ViewAngles& view, double depth_mm, double nearest_depth_mm) {
-  const double shell_mm = kNearestShellRadii * sphere.radius * depth_mm / nearest_depth_mm;
-  return sphere.centre + shell_mm * (upright_from_model.transpose() * ToCamera(view));
+  return sphere.centre + ShellRadiusMm(sphere, depth_mm, nearest_depth_mm) *
+                             (upright_from_model.transpose() * ToCamera(view));
 }
 
 vtkSmartPointer<vtkActor> MakeUpArrowActor(const Sphere& sphere,

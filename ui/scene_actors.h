@@ -36,6 +36,7 @@ vtkSmartPointer<vtkAxesActor> MakeAxesActor(double length_mm);
 // Views are angles in the upright frame of the training profile (geometry/up_axis.h); the glyphs
 // are drawn in the model frame.
 inline constexpr double kNearestShellRadii = 2.5;
+double ShellRadiusMm(const Sphere& sphere, double depth_mm, double nearest_depth_mm);
 Eigen::Vector3d GlyphPosition(const Sphere& sphere, const Eigen::Matrix3d& upright_from_model,
                               const ViewAngles& view, double depth_mm, double nearest_depth_mm);
 

@@ -94,8 +94,8 @@ void SceneView::SetCoverage(const std::vector<double>& layer_depths_mm,
     renderer_->AddViewProp(up_arrow_);
   }
   if (coverage_ != nullptr) {
-    coverage_radius_mm_ = kNearestShellRadii * model_->sphere.radius * layer_depths_mm.back() /
-                          layer_depths_mm.front();
+    coverage_radius_mm_ =
+        ShellRadiusMm(model_->sphere, layer_depths_mm.back(), layer_depths_mm.front());
   }
   if (coverage_ != nullptr) {
     scalar_bar_ = MakeDepthScalarBar(coverage_);

@@ -16,7 +16,6 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
-#include <algorithm>
 #include <exception>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -24,6 +23,7 @@
 #include "geometry/up_axis.h"
 #include "mesh/model_resting_poses.h"
 #include "ui/camera_form.h"
+#include "ui/fold_header.h"
 #include "ui/object_form.h"
 #include "ui/studio_dialogs.h"
 #include "ui/studio_session.h"
@@ -122,14 +122,9 @@ ViewsPanel::ViewsPanel(StudioSession* session, QWidget* parent)
 
 QWidget* ViewsPanel::BuildCameraBox() {
   // Folded to one line: set once per sensor, it need not take a short screen's height.
-  auto* toggle = new QToolButton;
+  QToolButton* toggle = MakeFoldHeader(camera_, false);
   toggle->setObjectName("cameraToggle");
-  toggle->setCheckable(true);
-  toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-  toggle->setAutoRaise(true);
-  toggle->setArrowType(Qt::RightArrow);
   toggle->setToolTip(tr("The pinhole camera every template is rendered with (as the sensor)"));
-  camera_->hide();
   auto update_summary = [this, toggle] {
     const PinholeCamera cam = camera_->camera();
     toggle->setText(tr("Camera: f %1 / %2 px, %3×%4")
@@ -140,10 +135,6 @@ QWidget* ViewsPanel::BuildCameraBox() {
   };
   update_summary();
   connect(camera_, &CameraForm::Changed, toggle, update_summary);
-  connect(toggle, &QToolButton::toggled, this, [this, toggle](bool open) {
-    toggle->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
-    camera_->setVisible(open);
-  });
   auto* box = new QWidget;
   auto* layout = new QVBoxLayout(box);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -206,10 +197,7 @@ QWidget* ViewsPanel::BuildOrientationBox() {
   column->addWidget(resting_);
   connect(up_axis_, qOverload<int>(&QComboBox::activated), this, [this] {
     const QString name = up_axis_->currentText();
-    if (UpAxisNames().end() ==
-        std::find(UpAxisNames().begin(), UpAxisNames().end(), name.toStdString())) {
-      return;  // the profile's own rotation, kept
-    }
+    if (name == kCustomUpAxis) return;  // the profile's own rotation, kept
     SetUpright(UprightFromUpAxis(name.toStdString()));
   });
   connect(tabletop, &QPushButton::clicked, this, [this] { ApplyViewPreset("tabletop"); });
@@ -217,24 +205,30 @@ QWidget* ViewsPanel::BuildOrientationBox() {
   return box;
 }
 
+std::vector<RestingPose> ViewsPanel::resting_poses() const {
+  return LikelyRestingPoses(resting_all_);
+}
+
 void ViewsPanel::UseRestingPose(int index) {
-  if (index < 0 || index >= static_cast<int>(resting_poses_.size())) return;
-  const RestingPose& pose = resting_poses_[static_cast<std::size_t>(index)];
+  const std::vector<RestingPose> poses = resting_poses();
+  if (index < 0 || index >= static_cast<int>(poses.size())) return;
+  const RestingPose& pose = poses[static_cast<std::size_t>(index)];
   SetUpright(pose.axis_name ? UprightFromUpAxis(*pose.axis_name)
                             : UprightFromUpDirection(pose.up_in_model));
 }
 
 void ViewsPanel::ShowRestingPoses() {
-  if (resting_poses_.empty()) {
+  const std::vector<RestingPose> poses = resting_poses();
+  if (poses.empty()) {
     resting_->setText(session_->model() == nullptr ? QString() : tr("Rests on: no stable face"));
     return;
   }
   QStringList links;
-  for (std::size_t i = 0; i < resting_poses_.size(); ++i) {
+  for (std::size_t i = 0; i < poses.size(); ++i) {
     links << QStringLiteral("<a href='%1'>%2</a> %3 %")
                  .arg(i)
-                 .arg(QString::fromStdString(RestingPoseName(resting_poses_[i])).toHtmlEscaped())
-                 .arg(100.0 * resting_poses_[i].probability, 0, 'f', 0);
+                 .arg(QString::fromStdString(RestingPoseName(poses[i])).toHtmlEscaped())
+                 .arg(100.0 * poses[i].probability, 0, 'f', 0);
   }
   QString text = tr("Rests on: %1").arg(links.join(" · "));
   if (!IsLikelyRestingUp(resting_all_, profile().views.upright_from_model)) {
@@ -399,7 +393,6 @@ void ViewsPanel::OnModelChanged() {
     object_->DefaultFromMesh(QString::fromStdString(model->source.string()));
     resting_all_ = SuggestRestingPoses(*model);  // milliseconds, even for scanned meshes
   }
-  resting_poses_ = LikelyRestingPoses(resting_all_);
   ShowRestingPoses();
   UpdatePlan();
 }

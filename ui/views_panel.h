@@ -32,7 +32,7 @@ class ViewsPanel : public QWidget {
   PinholeCamera camera() const;
   void SetCamera(const PinholeCamera& camera);
   // The model's likely resting poses, most likely first (empty without a model).
-  const std::vector<RestingPose>& resting_poses() const { return resting_poses_; }
+  std::vector<RestingPose> resting_poses() const;
   // Object id and name from the form (defaulted from the mesh file name).
   TrainingRequest request() const;
   void SetObject(std::int32_t obj_id, const QString& name);
@@ -68,7 +68,7 @@ class ViewsPanel : public QWidget {
   QWidget* BuildViewsBox();
   void ApplyViewPreset(const std::string& name);
   void ShowUpAxis(const Eigen::Matrix3d& upright_from_model);
-  void UseRestingPose(int index);  // of resting_poses_
+  void UseRestingPose(int index);  // of resting_poses()
   void ShowRestingPoses();
   QWidget* BuildFeaturesBox();
   void OnModelChanged();
@@ -82,9 +82,8 @@ class ViewsPanel : public QWidget {
   QDoubleSpinBox* depth_max_;
   QComboBox* up_axis_;
   QLabel* resting_;
-  RestingPoses resting_all_;                // of the session's model
-  std::vector<RestingPose> resting_poses_;  // the likely ones, offered as links
-  QDoubleSpinBox* angles_[3][3];            // [azimuth, elevation, roll][min, step, max]
+  RestingPoses resting_all_;      // of the session's model; the likely ones are offered as links
+  QDoubleSpinBox* angles_[3][3];  // [azimuth, elevation, roll][min, step, max]
   QDoubleSpinBox* even_spacing_;
   QSpinBox* color_features_;
   QSpinBox* normal_features_;

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "geometry/views.h"
 #include "util/error.h"
@@ -102,16 +101,15 @@ EnvelopeCheck ViewEnvelope::Check(const Pose& cam_from_model) const {
   }
   check.elevation_deg = RadToDeg(std::asin(std::clamp(to_camera.z(), -1.0, 1.0)));
   check.azimuth_deg = RadToDeg(std::atan2(to_camera.y(), to_camera.x()));
-  const double elevation_deg = check.elevation_deg;
   const Pose unrolled =
-      CamFromModelForView({check.azimuth_deg, elevation_deg, 0.0}, centre_in_model_,
+      CamFromModelForView({check.azimuth_deg, check.elevation_deg, 0.0}, centre_in_model_,
                           centre_in_cam.norm(), upright_from_model_);
   const Eigen::Matrix3d roll = aimed.R * unrolled.R.transpose();
   check.roll_deg = RadToDeg(std::atan2(roll(1, 0), roll(0, 0)));
 
   if (check.view_gap_deg > view_step_deg_) {
     check.reason = Format("seen from %.0f deg elevation, %.1f deg from every template view",
-                          elevation_deg, check.view_gap_deg);
+                          check.elevation_deg, check.view_gap_deg);
   } else if (!full_roll_ && (WrapDeg(check.roll_deg - roll_min_deg_) < -roll_step_deg_ - 1e-6 ||
                              WrapDeg(check.roll_deg - roll_max_deg_) > roll_step_deg_ + 1e-6)) {
     check.reason = Format("roll %.0f deg outside the trained %.0f..%.0f deg", check.roll_deg,
@@ -125,16 +123,18 @@ EnvelopeCheck ViewEnvelope::Check(const Pose& cam_from_model) const {
   return check;
 }
 
-std::vector<GroundTruthCoverage> CheckGroundTruthCoverage(
-    const TemplateArchive& archive, const std::vector<BopGroundTruth>& ground_truth) {
-  std::map<std::int32_t, ViewEnvelope> envelopes;
+void ObjectEnvelopes::Add(const TemplateArchive& archive) {
   for (const ArchiveObject& object : archive.manifest().objects) {
-    envelopes.emplace(object.obj_id, ViewEnvelope(archive, object.obj_id));
+    by_object_.emplace(object.obj_id, ViewEnvelope(archive, object.obj_id));
   }
+}
+
+std::vector<GroundTruthCoverage> ObjectEnvelopes::Check(
+    const std::vector<BopGroundTruth>& ground_truth) const {
   std::vector<GroundTruthCoverage> coverage;
   for (const BopGroundTruth& instance : ground_truth) {
     GroundTruthCoverage entry{instance.obj_id, std::nullopt};
-    if (const auto found = envelopes.find(instance.obj_id); found != envelopes.end()) {
+    if (const auto found = by_object_.find(instance.obj_id); found != by_object_.end()) {
       entry.check = found->second.Check(instance.cam_from_model);
     }
     coverage.push_back(std::move(entry));

@@ -3,6 +3,7 @@
 // training question (widen the envelope, set the up axis), not a detection failure.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,8 +59,22 @@ struct GroundTruthCoverage {
   std::optional<EnvelopeCheck> check;  // empty: the archive has no templates of that object
 };
 
-// One entry per instance of `ground_truth`, in its order.
-std::vector<GroundTruthCoverage> CheckGroundTruthCoverage(
-    const TemplateArchive& archive, const std::vector<BopGroundTruth>& ground_truth);
+// The envelopes of every object of one or more archives, by object id. Building one costs a pass
+// over the object's template views (their spacing), so they are built once per archive and then
+// check any number of poses.
+class ObjectEnvelopes {
+ public:
+  ObjectEnvelopes() = default;
+  explicit ObjectEnvelopes(const TemplateArchive& archive) { Add(archive); }
+
+  void Add(const TemplateArchive& archive);  // each of its objects
+  // Throws std::out_of_range when no archive added has templates of `obj_id`.
+  const ViewEnvelope& At(std::int32_t obj_id) const { return by_object_.at(obj_id); }
+  // One entry per instance of `ground_truth`, in its order.
+  std::vector<GroundTruthCoverage> Check(const std::vector<BopGroundTruth>& ground_truth) const;
+
+ private:
+  std::map<std::int32_t, ViewEnvelope> by_object_;
+};
 
 }  // namespace layermod

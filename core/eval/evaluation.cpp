@@ -54,12 +54,8 @@ EvalPlan PlanEvaluation(const std::filesystem::path& dataset_dir,
 }
 
 EnvelopeMisses FindEnvelopeMisses(const Detector& detector, const EvalPlan& plan) {
-  std::map<std::int32_t, ViewEnvelope> envelopes;
-  for (std::size_t a = 0; a < detector.archive_count(); ++a) {
-    for (const ArchiveObject& object : detector.archive(a).manifest().objects) {
-      envelopes.emplace(object.obj_id, ViewEnvelope(detector.archive(a), object.obj_id));
-    }
-  }
+  ObjectEnvelopes envelopes;
+  for (std::size_t a = 0; a < detector.archive_count(); ++a) envelopes.Add(detector.archive(a));
   EnvelopeMisses outside;
   for (const EvalFrame& frame : plan.frames) {
     const BopFrameAnnotations& annotations =
@@ -69,7 +65,7 @@ EnvelopeMisses FindEnvelopeMisses(const Detector& detector, const EvalPlan& plan
       bool covered = false;
       for (int index : target.gt_indices) {
         const EnvelopeCheck check =
-            envelopes.at(target.obj_id)
+            envelopes.At(target.obj_id)
                 .Check(annotations.gt.at(static_cast<std::size_t>(index)).cam_from_model);
         covered = covered || check.inside;
         if (note.empty()) note = check.reason;

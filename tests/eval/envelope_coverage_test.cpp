@@ -89,8 +89,7 @@ TEST_F(EnvelopeCoverageTest, AFramesGroundTruthIsCheckedPerInstance) {
   const std::vector<BopGroundTruth> ground_truth = {{3, ViewPose(10.0, 50.0, 0.0, 700.0)},
                                                     {9, ViewPose(10.0, 50.0, 0.0, 700.0)},
                                                     {3, ViewPose(0.0, -60.0, 0.0, 700.0)}};
-  const std::vector<GroundTruthCoverage> coverage =
-      CheckGroundTruthCoverage(*archive_, ground_truth);
+  const std::vector<GroundTruthCoverage> coverage = ObjectEnvelopes(*archive_).Check(ground_truth);
   ASSERT_EQ(coverage.size(), 3u);
   EXPECT_EQ(coverage[0].obj_id, 3);
   ASSERT_TRUE(coverage[0].check.has_value());
