@@ -136,6 +136,8 @@ void AddSynthCommand(CLI::App& app) {
                    "The models' axis that points up when they stand on the table")
       ->check(CLI::IsMember({"+x", "-x", "+y", "-y", "+z", "-z"}))
       ->capture_default_str();
+  command->add_flag("--any-orientation", o.any_orientation,
+                    "Models lie in any orientation (uniformly random rotation), not upright");
   command->add_option("--threads", o.threads, "Worker threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--out", args->out, "Dataset folder to create (new or empty)")->required();

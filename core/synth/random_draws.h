@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <random>
 
 namespace layermod {
@@ -23,6 +24,16 @@ inline Eigen::Vector2d UniformVector2(std::mt19937_64& rng, double low, double h
   const double y = Uniform(rng, low, high);
   const double x = Uniform(rng, low, high);
   return {x, y};
+}
+
+// A rotation uniform over SO(3): a unit quaternion from four normal draws, w first.
+inline Eigen::Matrix3d UniformRotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> normal;
+  const double w = normal(rng);
+  const double x = normal(rng);
+  const double y = normal(rng);
+  const double z = normal(rng);
+  return Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
 }
 
 }  // namespace layermod

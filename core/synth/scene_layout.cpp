@@ -164,6 +164,9 @@ PlacedItem PlaceRandomUpright(const RenderMesh& mesh, const Sphere& sphere, std:
   const double tilt_azimuth = Uniform(rng, -kPi, kPi);
   const double tilt = DegToRad(Uniform(rng, 0.0, options.max_tilt_deg));
   const Eigen::Vector3d axis(std::cos(tilt_azimuth), std::sin(tilt_azimuth), 0.0);
+  if (options.any_orientation) {
+    return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy, UniformRotation(rng));
+  }
   return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy, options.upright_from_model);
 }
 

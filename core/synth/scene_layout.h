@@ -60,7 +60,8 @@ PlacedItem PlaceUpright(const RenderMesh& mesh, const Sphere& sphere, std::int32
                         const Eigen::Matrix3d& upright_from_model = Eigen::Matrix3d::Identity());
 
 // A random upright pose of `mesh` at `xy` (yaw uniform, tilt up to options.max_tilt_deg, the
-// models' up axis options.upright_from_model).
+// models' up axis options.upright_from_model), or with options.any_orientation a rotation
+// uniform over all (the part resting on its lowest vertex, as in a bin).
 PlacedItem PlaceRandomUpright(const RenderMesh& mesh, const Sphere& sphere, std::int32_t obj_id,
                               const Eigen::Vector2d& xy, const SynthOptions& options,
                               std::mt19937_64& rng);

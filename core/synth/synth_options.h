@@ -67,6 +67,8 @@ struct SynthOptions {
   double max_tilt_deg = 3.0;     // objects stand upright, give or take this
   // The models' up axis (geometry/up_axis.h): they stand with it pointing up. Identity: +Z.
   Eigen::Matrix3d upright_from_model = Eigen::Matrix3d::Identity();
+  // Models lie in any orientation (uniform over all rotations) instead of upright.
+  bool any_orientation = false;
   int margin_px = 4;                      // the whole target stays this far inside the image
   std::filesystem::path backgrounds_dir;  // photos textured onto the table; empty: procedural
   PinholeCamera camera;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "support/matchers.h"
 #include "synth/primitives.h"
@@ -43,6 +44,31 @@ TEST(SceneLayoutTest, UprightItemsRestOnTheTableAboveTheirPlace) {
   // The footprint radius bounds every vertex; the box's half diagonal is the exact value.
   EXPECT_GE(item.footprint_radius_mm, std::hypot(20.0, 40.0) - 1e-6);
   EXPECT_NEAR((item.world_from_item.R * item.world_from_item.R.transpose()).trace(), 3.0, 1e-12);
+}
+
+TEST(SceneLayoutTest, AnyOrientationTurnsItemsEveryWayAndRestsThemOnTheTable) {
+  const RenderMesh box = MakeBoxMesh({40.0f, 80.0f, 30.0f}, {1.0f, 1.0f, 1.0f});
+  const Sphere sphere = SphereOf(box);
+  SynthOptions options;
+  options.any_orientation = true;
+  std::mt19937_64 rng(5);
+  // Where the model's +Z points: upright placements keep it within the tilt of up; uniform
+  // rotations spread it over the sphere (mean z about 0, some pointing down).
+  double mean_up_z = 0.0;
+  int pointing_down = 0;
+  constexpr int kItems = 400;
+  for (int i = 0; i < kItems; ++i) {
+    const PlacedItem item = PlaceRandomUpright(box, sphere, 1, {0.0, 0.0}, options, rng);
+    EXPECT_NEAR(LowestZ(item), 0.0, 1e-9);
+    const double up_z = item.world_from_item.R(2, 2);
+    mean_up_z += up_z / kItems;
+    pointing_down += up_z < -0.5 ? 1 : 0;
+  }
+  EXPECT_NEAR(mean_up_z, 0.0, 0.1);
+  EXPECT_GT(pointing_down, kItems / 6);  // a quarter of uniform rotations point below -0.5
+  options.any_orientation = false;
+  const PlacedItem upright = PlaceRandomUpright(box, sphere, 1, {0.0, 0.0}, options, rng);
+  EXPECT_GT(upright.world_from_item.R(2, 2), std::cos(DegToRad(options.max_tilt_deg)) - 1e-9);
 }
 
 TEST(SceneLayoutTest, LookAtSeesTheTargetAtThePixel) {
