@@ -164,10 +164,9 @@ PlacedItem PlaceRandomUpright(const RenderMesh& mesh, const Sphere& sphere, std:
   const double tilt_azimuth = Uniform(rng, -kPi, kPi);
   const double tilt = DegToRad(Uniform(rng, 0.0, options.max_tilt_deg));
   const Eigen::Vector3d axis(std::cos(tilt_azimuth), std::sin(tilt_azimuth), 0.0);
-  if (options.any_orientation) {
-    return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy, UniformRotation(rng));
-  }
-  return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy, options.upright_from_model);
+  const Eigen::Matrix3d upright_from_model =
+      options.any_orientation ? UniformRotation(rng) : options.upright_from_model;
+  return PlaceUpright(mesh, sphere, obj_id, yaw, axis, tilt, xy, upright_from_model);
 }
 
 Pose LookAtFrom(const Eigen::Vector3d& target_centre, const Eigen::Vector3d& camera_centre,
