@@ -5,7 +5,7 @@
 #include <QWidget>
 #include <exception>
 
-#include "ui/archive_mesh.h"
+#include "templates/archive_mesh.h"
 #include "ui/job_runner.h"
 #include "ui/model_panel.h"
 #include "ui/recent_files.h"

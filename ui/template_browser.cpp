@@ -12,11 +12,11 @@
 #include <QVBoxLayout>
 #include <exception>
 
-#include "ui/archive_mesh.h"
+#include "templates/archive_mesh.h"
+#include "templates/template_picture.h"
 #include "ui/image_convert.h"
 #include "ui/studio_session.h"
 #include "ui/template_list_model.h"
-#include "ui/template_thumbnail.h"
 
 namespace layermod::ui {
 namespace {
@@ -219,7 +219,7 @@ void TemplateBrowser::ShowDetail(int row) {
   }
   cv::Mat image;
   try {
-    image = RenderTemplateImage(*record, model_->archive()->camera(), model_->MeshFor(*record));
+    image = RenderTemplatePicture(*record, model_->archive()->camera(), model_->MeshFor(*record));
   } catch (const std::exception&) {
     // Shown as an empty image; the text still describes the template.
   }

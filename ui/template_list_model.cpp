@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <exception>
 
+#include "templates/template_picture.h"
 #include "ui/image_convert.h"
-#include "ui/template_thumbnail.h"
 
 namespace layermod::ui {
 namespace {
@@ -155,8 +155,8 @@ QVariant TemplateListModel::Thumbnail(std::size_t template_index) const {
     pool_.start([self, template_index, generation = generation_, archive = archive_, mesh] {
       cv::Mat image;
       try {
-        image = RenderTemplateImage(archive->templates()[template_index], archive->camera(),
-                                    mesh.get());
+        image = RenderTemplatePicture(archive->templates()[template_index], archive->camera(),
+                                      mesh.get());
       } catch (const std::exception&) {
         // A view the renderer refuses shows as an empty (black) thumbnail.
       }

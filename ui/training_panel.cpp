@@ -12,7 +12,7 @@
 #include <exception>
 #include <nlohmann/json.hpp>
 
-#include "ui/archive_mesh.h"
+#include "templates/archive_mesh.h"
 #include "ui/job_runner.h"
 #include "ui/studio_dialogs.h"
 #include "ui/studio_session.h"

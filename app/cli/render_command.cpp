@@ -6,10 +6,8 @@
 
 #include "cli/commands.h"
 #include "cli/image_output.h"
-#include "features/extraction.h"
-#include "features/feature_overlay.h"
-#include "render/rasterizer.h"
 #include "templates/archive.h"
+#include "templates/template_picture.h"
 #include "util/error.h"
 
 namespace layermod::cli {
@@ -21,16 +19,6 @@ struct RenderArgs {
   std::string out_dir;
   int every = 100;
 };
-
-// The paper's Fig. 4: the template's render with its features drawn on it.
-cv::Mat TemplatePicture(const TemplateArchive& archive, const TemplateRecord& record) {
-  const ArchiveObject& object = archive.Object(record.obj_id);
-  const RenderedView view = RenderView(object.mesh, archive.camera(), record.cam_from_model);
-  ExtractedTemplate features;
-  features.bbox_px = record.bbox_px;
-  features.levels = record.levels;
-  return RenderFeatureOverlay(view, features);
-}
 
 std::string FileName(const TemplateRecord& record) {
   char name[96];
@@ -49,7 +37,8 @@ void RunRender(const RenderArgs& args) {
   for (std::size_t i = 0; i < archive.templates().size();
        i += static_cast<std::size_t>(args.every)) {
     const TemplateRecord& record = archive.templates()[i];
-    WritePng(fs::path(args.out_dir) / FileName(record), TemplatePicture(archive, record));
+    WritePng(fs::path(args.out_dir) / FileName(record),
+             RenderTemplatePicture(record, archive.camera(), &archive.Object(record.obj_id).mesh));
     ++written;
   }
   std::printf("wrote %d template image(s) to %s\n", written, args.out_dir.c_str());

@@ -7,7 +7,7 @@
 #include "mesh/model.h"
 #include "templates/archive.h"
 
-namespace layermod::ui {
+namespace layermod {
 
 // Whether `model` is the mesh `object` was trained from, with the same units and placement, so
 // the archive's poses render it correctly.
@@ -21,4 +21,4 @@ std::optional<std::filesystem::path> MeshBesideArchive(const std::filesystem::pa
 // sits at the origin but the file's does not. Throws like LoadModel.
 Model LoadModelForObject(const std::filesystem::path& mesh_path, const ArchiveObject& object);
 
-}  // namespace layermod::ui
+}  // namespace layermod

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "ui/template_thumbnail.h"
+#include "templates/template_picture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "features/feature_overlay.h"
 #include "render/rasterizer.h"
 
-namespace layermod::ui {
+namespace layermod {
 namespace {
 
 constexpr int kFeaturePaddingPx = 6;
@@ -26,8 +26,8 @@ RenderedView BlackViewAroundFeatures(const cv::Rect& bbox_px) {
 
 }  // namespace
 
-cv::Mat RenderTemplateImage(const TemplateRecord& record, const PinholeCamera& camera,
-                            const RenderMesh* mesh) {
+cv::Mat RenderTemplatePicture(const TemplateRecord& record, const PinholeCamera& camera,
+                              const RenderMesh* mesh) {
   const ExtractedTemplate features{record.bbox_px, record.levels};
   RenderedView view;
   if (mesh != nullptr) view = RenderView(*mesh, camera, record.cam_from_model);
@@ -52,4 +52,4 @@ cv::Mat FitInSquare(const cv::Mat& image, int size_px) {
   return square;
 }
 
-}  // namespace layermod::ui
+}  // namespace layermod

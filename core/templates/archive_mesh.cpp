@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "ui/archive_mesh.h"
+#include "templates/archive_mesh.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace layermod::ui {
+namespace layermod {
 namespace {
 
 // Sphere agreement tolerance: the sphere is recomputed from the same vertices, so it agrees to
@@ -42,4 +42,4 @@ Model LoadModelForObject(const std::filesystem::path& mesh_path, const ArchiveOb
   return model;
 }
 
-}  // namespace layermod::ui
+}  // namespace layermod
