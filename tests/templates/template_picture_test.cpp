@@ -10,7 +10,9 @@ namespace {
 
 RenderMesh Square(float half_mm) {
   RenderMesh mesh;
-  mesh.positions = {{-half_mm, -half_mm, 0}, {half_mm, -half_mm, 0}, {half_mm, half_mm, 0},
+  mesh.positions = {{-half_mm, -half_mm, 0},
+                    {half_mm, -half_mm, 0},
+                    {half_mm, half_mm, 0},
                     {-half_mm, half_mm, 0}};
   mesh.colors.assign(4, Eigen::Vector3f(0.2f, 0.4f, 0.9f));
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
