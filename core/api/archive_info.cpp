@@ -86,9 +86,7 @@ nlohmann::json ArchiveInfoJson(const TemplateArchive& archive) {
   json["format_version"] = manifest.format_version;
   json["tool_version"] = manifest.tool_version;
   json["created_utc"] = manifest.created_utc;
-  const PinholeCamera& camera = manifest.camera;
-  json["camera"] = {{"fx", camera.fx}, {"fy", camera.fy},       {"cx", camera.cx},
-                    {"cy", camera.cy}, {"width", camera.width}, {"height", camera.height}};
+  json["camera"] = CameraJson(manifest.camera);
   json["templates"] = archive.templates().size();
   for (const ArchiveObject& object : manifest.objects) {
     json["objects"].push_back(ObjectJson(archive, object));

@@ -137,9 +137,8 @@ void BopSceneWriter::Finish() {
 }
 
 void WriteBopCamera(const fs::path& path, const PinholeCamera& camera, double depth_scale) {
-  const OrderedJson json = {{"cx", camera.cx},      {"cy", camera.cy}, {"depth_scale", depth_scale},
-                            {"fx", camera.fx},      {"fy", camera.fy}, {"height", camera.height},
-                            {"width", camera.width}};
+  nlohmann::json json = CameraJson(camera);  // keys sorted, as BOP's own files
+  json["depth_scale"] = depth_scale;
   WriteFileAtomically(path, bop_internal::DumpJson(json));
 }
 

@@ -75,4 +75,9 @@ PinholeCamera LoadCameraJson(const std::filesystem::path& path) {
   return camera;
 }
 
+nlohmann::json CameraJson(const PinholeCamera& camera) {
+  return {{"fx", camera.fx}, {"fy", camera.fy},       {"cx", camera.cx},
+          {"cy", camera.cy}, {"width", camera.width}, {"height", camera.height}};
+}
+
 }  // namespace layermod

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 
 namespace layermod {
 
@@ -35,5 +36,10 @@ struct PinholeCamera {
 // Reads a BOP camera file (`fx fy cx cy width height`, `depth_scale` optional). Throws IoError or
 // FormatError naming the file and the missing or invalid field.
 PinholeCamera LoadCameraJson(const std::filesystem::path& path);
+
+// The intrinsics and image size as a JSON object (`fx fy cx cy width height`): what
+// LoadCameraJson reads, and the camera of the archive manifest, `inspect --json` and BOP's
+// camera.json (which adds `depth_scale`).
+nlohmann::json CameraJson(const PinholeCamera& camera);
 
 }  // namespace layermod

@@ -19,11 +19,6 @@ constexpr std::size_t kMaxLayers = 65536;  // layer_index is 16-bit in the templ
 
 nlohmann::json VectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-nlohmann::json CameraJson(const PinholeCamera& camera) {
-  return {{"fx", camera.fx}, {"fy", camera.fy},       {"cx", camera.cx},
-          {"cy", camera.cy}, {"width", camera.width}, {"height", camera.height}};
-}
-
 nlohmann::json MeshJson(const MeshInfo& mesh) {
   return {{"entry", mesh.entry},
           {"vertex_count", mesh.vertex_count},

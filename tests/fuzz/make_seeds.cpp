@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -80,13 +81,6 @@ void WriteProfileSeeds(const fs::path& dir, const fs::path& work) {
   WriteSeed(dir, "partial.json", R"({"depth_min_mm": 650, "views": {"roll": "-30:15:30"}})");
 }
 
-std::string CameraJson(const PinholeCamera& camera) {
-  return "{\"fx\": " + std::to_string(camera.fx) + ", \"fy\": " + std::to_string(camera.fy) +
-         ", \"cx\": " + std::to_string(camera.cx) + ", \"cy\": " + std::to_string(camera.cy) +
-         ", \"width\": " + std::to_string(camera.width) +
-         ", \"height\": " + std::to_string(camera.height) + ", \"depth_scale\": 1.0}";
-}
-
 void WriteCaptureSeeds(const fs::path& dir) {
   const PinholeCamera camera = SmallCamera();
   cv::Mat depth(camera.height, camera.width, CV_16U, cv::Scalar(900));
@@ -94,7 +88,9 @@ void WriteCaptureSeeds(const fs::path& dir) {
   depth(cv::Rect(0, 0, 6, 6)).setTo(0);
   cv::Mat color(camera.height, camera.width, CV_8UC3, cv::Scalar(90, 110, 130));
   cv::rectangle(color, {20, 12, 24, 20}, cv::Scalar(200, 60, 40), cv::FILLED);
-  const std::string json = CameraJson(camera);
+  nlohmann::json camera_json = CameraJson(camera);
+  camera_json["depth_scale"] = 1.0;
+  const std::string json = camera_json.dump();
   WriteSeed(dir, "capture", fuzz::JoinParts({json, EncodePng(depth), EncodePng(color)}));
   cv::Mat depth8;
   depth.convertTo(depth8, CV_8U, 0.25);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "support/matchers.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
@@ -38,6 +40,13 @@ TEST(CameraTest, LoadsBopCameraFile) {
                       R"({"cx": 325.2611, "cy": 242.04899, "depth_scale": 1.0, "fx": 572.4114,
                           "fy": 573.57043, "height": 480, "width": 640})");
   EXPECT_EQ(LoadCameraJson(dir / "camera.json"), Kinect());
+}
+
+TEST(CameraTest, WrittenJsonReadsBackAsTheSameCamera) {
+  test::TempDir dir;
+  WriteFileAtomically(dir / "camera.json", CameraJson(Kinect()).dump());
+  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), Kinect());
+  EXPECT_EQ(CameraJson(Kinect()).size(), 6u);  // exactly the six fields, nothing else
 }
 
 TEST(CameraTest, MissingFieldIsNamed) {
