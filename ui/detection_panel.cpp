@@ -440,7 +440,7 @@ void DetectionPanel::RefreshImage() {
     return image_->SetImage(ToQImage(capture_->color));
   }
   image_->SetImage(
-      ToQImage(ComposeDetectionOverlays(*capture_, *result_, *result_detector_, overlays())));
+      ToQImage(ComposeStageOverlays(*capture_, *result_, *result_detector_, overlays())));
 }
 
 void DetectionPanel::UpdateCoverage() {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "eval/envelope_coverage.h"
+#include "pipeline/overlay_stack.h"
 #include "ui/capture_source.h"
-#include "ui/detection_overlays.h"
 
 class QCheckBox;
 class QLabel;

@@ -69,6 +69,19 @@ Capture LoadRequestedCapture(const DetectArgs& args) {
   return LoadCapture(files);
 }
 
+cv::Mat DimmedColor(const Capture& capture) {
+  cv::Mat canvas = capture.color.clone();
+  DimColor(canvas);
+  return canvas;
+}
+
+cv::Mat PosesOverColor(const Capture& capture, const DetectionResult& result,
+                       const Detector& detector) {
+  cv::Mat canvas = capture.color.clone();
+  DrawPoses(canvas, result.detections, detector, capture.camera);
+  return canvas;
+}
+
 void WriteStageImages(const fs::path& dir, const Capture& capture, const DetectionResult& result,
                       const Detector& detector) {
   std::error_code ec;
@@ -78,15 +91,20 @@ void WriteStageImages(const fs::path& dir, const Capture& capture, const Detecti
     const ArchiveObject& object = detector.Object(diagnostics.obj_id);
     const std::string prefix = "obj" + std::to_string(diagnostics.obj_id) + "_";
     if (!diagnostics.division.blocks.empty() || !diagnostics.coarse.evaluated.empty()) {
-      WritePng(dir / (prefix + "1_regions.png"),
-               DrawRegionDivision(capture.color, diagnostics, object));
-      WritePng(dir / (prefix + "2_coarse.png"), DrawCoarsePositioning(capture.color, diagnostics));
+      cv::Mat regions = DimmedColor(capture);
+      DrawRegionDivision(regions, diagnostics, object);
+      DrawLayerLegend(regions, object);
+      WritePng(dir / (prefix + "1_regions.png"), regions);
+      cv::Mat coarse = DimmedColor(capture);
+      DrawCoarsePositioning(coarse, diagnostics);
+      DrawCoarseLegend(coarse);
+      WritePng(dir / (prefix + "2_coarse.png"), coarse);
     }
-    WritePng(dir / (prefix + "3_matches.png"),
-             DrawMatches(capture.color, diagnostics, detector.ArchiveOf(diagnostics.obj_id)));
+    cv::Mat matches = DimmedColor(capture);
+    DrawMatches(matches, diagnostics, detector.ArchiveOf(diagnostics.obj_id));
+    WritePng(dir / (prefix + "3_matches.png"), matches);
   }
-  WritePng(dir / "4_poses.png",
-           DrawPoses(capture.color, result.detections, detector, capture.camera));
+  WritePng(dir / "4_poses.png", PosesOverColor(capture, result, detector));
 }
 
 void PrintDetections(const DetectionResult& result) {
@@ -119,8 +137,7 @@ void RunDetect(const DetectArgs& args) {
     WriteFileAtomically(args.json_out, DetectionResultToJson(result, options.mode).dump(2) + "\n");
   }
   if (!args.overlay_out.empty()) {
-    WritePng(args.overlay_out,
-             DrawPoses(capture.color, result.detections, detector, capture.camera));
+    WritePng(args.overlay_out, PosesOverColor(capture, result, detector));
   }
   if (!args.stages_dir.empty()) WriteStageImages(args.stages_dir, capture, result, detector);
 }

@@ -60,7 +60,7 @@ bool CaptureFromArguments(const QCommandLineParser& parser, const CaptureOptions
   return true;
 }
 
-layermod::ui::OverlayToggles OverlaysFromArgument(const QString& list) {
+layermod::OverlayToggles OverlaysFromArgument(const QString& list) {
   const QStringList names = list.split(',', Qt::SkipEmptyParts);
   return {names.contains("regions"), names.contains("coarse"), names.contains("matches"),
           names.contains("poses")};

@@ -11,12 +11,6 @@
 namespace layermod {
 namespace {
 
-cv::Mat DimmedCopy(const cv::Mat& color) {
-  cv::Mat canvas;
-  color.convertTo(canvas, -1, 0.6, 0.0);
-  return canvas;
-}
-
 void DrawLabel(cv::Mat& canvas, const std::string& text, cv::Point origin, cv::Scalar color) {
   cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3,
               cv::LINE_AA);
@@ -44,7 +38,14 @@ void DrawAxes(cv::Mat& canvas, const Pose& pose, const Eigen::Vector3d& centre, 
   }
 }
 
+// Legend lines: the first text baseline 16 px below the legend's top, one line every 18 px.
+constexpr int kLegendFirstBaselinePx = 16;
+constexpr int kLegendLinePx = 18;
+constexpr int kLegendDescentPx = 8;  // below a line's baseline, room for its descenders
+
 }  // namespace
+
+void DimColor(cv::Mat& canvas) { canvas.convertTo(canvas, -1, 0.6, 0.0); }
 
 cv::Scalar LayerColor(int index, int count) {
   cv::Mat hsv(1, 1, CV_8UC3,
@@ -55,9 +56,8 @@ cv::Scalar LayerColor(int index, int count) {
   return cv::Scalar(pixel[0], pixel[1], pixel[2]);
 }
 
-cv::Mat DrawRegionDivision(const cv::Mat& color, const ObjectDiagnostics& diagnostics,
-                           const ArchiveObject& object) {
-  cv::Mat canvas = DimmedCopy(color);
+void DrawRegionDivision(cv::Mat& canvas, const ObjectDiagnostics& diagnostics,
+                        const ArchiveObject& object) {
   const RegionDivision& division = diagnostics.division;
   const int layers = static_cast<int>(object.layer_depths_mm.size());
   for (const SceneBlock& block : division.blocks) {
@@ -70,8 +70,12 @@ cv::Mat DrawRegionDivision(const cv::Mat& color, const ObjectDiagnostics& diagno
     cv::findContours(mask.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
     cv::drawContours(canvas, contours, -1, cv::Scalar(255, 255, 255), 1);
   }
+}
+
+int DrawLayerLegend(cv::Mat& canvas, const ArchiveObject& object, int top_px) {
+  const int layers = static_cast<int>(object.layer_depths_mm.size());
   for (int i = 0; i < layers; ++i) {
-    const cv::Point corner(8, 16 + 18 * i);
+    const cv::Point corner(8, top_px + kLegendFirstBaselinePx + kLegendLinePx * i);
     cv::rectangle(canvas, corner + cv::Point(0, -10), corner + cv::Point(12, 2),
                   LayerColor(i, layers), cv::FILLED);
     char text[48];
@@ -79,11 +83,10 @@ cv::Mat DrawRegionDivision(const cv::Mat& color, const ObjectDiagnostics& diagno
                   object.layer_depths_mm[static_cast<std::size_t>(i)]);
     DrawLabel(canvas, text, corner + cv::Point(18, 0), cv::Scalar(255, 255, 255));
   }
-  return canvas;
+  return top_px + kLegendFirstBaselinePx + kLegendLinePx * (layers - 1) + kLegendDescentPx;
 }
 
-cv::Mat DrawCoarsePositioning(const cv::Mat& color, const ObjectDiagnostics& diagnostics) {
-  cv::Mat canvas = DimmedCopy(color);
+void DrawCoarsePositioning(cv::Mat& canvas, const ObjectDiagnostics& diagnostics) {
   const CoarsePositioning& coarse = diagnostics.coarse;
   for (int index : coarse.kept) {
     const BlockCandidates& block = coarse.evaluated[static_cast<std::size_t>(index)];
@@ -99,14 +102,16 @@ cv::Mat DrawCoarsePositioning(const cv::Mat& color, const ObjectDiagnostics& dia
   for (const DetectionPoint& point : coarse.KeptPoints()) {
     cv::circle(canvas, point.pixel, 3, cv::Scalar(0, 255, 0), cv::FILLED);
   }
-  DrawLabel(canvas, "kept points: green, rejected: red, kept blocks: yellow", {8, 16},
-            cv::Scalar(255, 255, 255));
-  return canvas;
 }
 
-cv::Mat DrawMatches(const cv::Mat& color, const ObjectDiagnostics& diagnostics,
-                    const TemplateArchive& archive) {
-  cv::Mat canvas = DimmedCopy(color);
+int DrawCoarseLegend(cv::Mat& canvas, int top_px) {
+  DrawLabel(canvas, "kept points: green, rejected: red, kept blocks: yellow",
+            {8, top_px + kLegendFirstBaselinePx}, cv::Scalar(255, 255, 255));
+  return top_px + kLegendFirstBaselinePx + kLegendDescentPx;
+}
+
+void DrawMatches(cv::Mat& canvas, const ObjectDiagnostics& diagnostics,
+                 const TemplateArchive& archive) {
   int drawn = 0;
   for (const RawMatch& match : diagnostics.matches) {
     const TemplateRecord& tmpl = archive.templates().at(match.template_id);
@@ -124,12 +129,10 @@ cv::Mat DrawMatches(const cv::Mat& color, const ObjectDiagnostics& diagnostics,
     DrawLabel(canvas, text, box.tl() + cv::Point(2, -4), colour);
     if (++drawn == 10) break;
   }
-  return canvas;
 }
 
-cv::Mat DrawPoses(const cv::Mat& color, const std::vector<Detection>& detections,
-                  const Detector& detector, const PinholeCamera& camera) {
-  cv::Mat canvas = color.clone();
+void DrawPoses(cv::Mat& canvas, const std::vector<Detection>& detections, const Detector& detector,
+               const PinholeCamera& camera) {
   for (const Detection& detection : detections) {
     const ArchiveObject& object = detector.Object(detection.obj_id);
     const RenderedView view = RenderView(object.mesh, camera, detection.cam_from_model);
@@ -149,7 +152,6 @@ cv::Mat DrawPoses(const cv::Mat& color, const std::vector<Detection>& detections
     DrawLabel(canvas, text, cv::Point2d(label_at.x(), label_at.y()) + cv::Point2d(8, -8),
               cv::Scalar(0, 255, 0));
   }
-  return canvas;
 }
 
 }  // namespace layermod
