@@ -8,6 +8,7 @@
 #include <random>
 #include <thread>
 
+#include "support/test_cameras.h"
 #include "support/test_paths.h"
 #include "util/error.h"
 
@@ -19,23 +20,12 @@ using ::testing::HasSubstr;
 
 using test::ThrownMessage;
 
-PinholeCamera SmallCamera() {
-  PinholeCamera camera;
-  camera.fx = 80.123456789;
-  camera.fy = 81.5;
-  camera.cx = 39.75;
-  camera.cy = 29.25;
-  camera.width = 80;
-  camera.height = 60;
-  return camera;
-}
-
 // A frame with random colour, integer depth in mm, and two instances with awkward numbers.
 BopFrame RandomFrame(int image_id, std::mt19937_64& rng) {
   BopFrame frame;
   frame.scene_id = 1;
   frame.image_id = image_id;
-  frame.camera = SmallCamera();
+  frame.camera = test::ManyDigitsCamera();
   frame.color.create(60, 80, CV_8UC3);
   cv::randu(frame.color, 0, 256);
   frame.depth_mm.create(60, 80, CV_32F);
@@ -153,8 +143,8 @@ TEST(BopWriterTest, RefusesBadFrames) {
 
 TEST(BopWriterTest, CameraFileRoundTrips) {
   test::TempDir dir;
-  WriteBopCamera(dir / "camera.json", SmallCamera());
-  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), SmallCamera());
+  WriteBopCamera(dir / "camera.json", test::ManyDigitsCamera());
+  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), test::ManyDigitsCamera());
 }
 
 }  // namespace

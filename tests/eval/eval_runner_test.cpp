@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/test_cameras.h"
 #include "support/thrown.h"
 #include "util/error.h"
 
@@ -40,7 +41,7 @@ Frame TwoInstanceFrame() {
   f.frame.image_id = 5;
   f.frame.targets = {{3, {0, 1}}, {4, {2}}};
   f.frame.absent = {7};
-  f.image.camera = {500.0, 500.0, 320.0, 240.0, 640, 480};
+  f.image.camera = test::RoundVgaCamera();
   f.image.gt = {{3, At(-200, 1000)}, {3, At(200, 1000)}, {4, At(0, 900)}};
   return f;
 }

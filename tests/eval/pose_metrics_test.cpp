@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "support/test_cameras.h"
 #include "util/error.h"
 
 namespace layermod {
@@ -30,13 +31,11 @@ Eigen::Matrix3d RotZ(double angle_deg) {
   return Eigen::AngleAxisd(DegToRad(angle_deg), Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-PinholeCamera Camera() { return {500.0, 500.0, 320.0, 240.0, 640, 480}; }
-
 TEST(PoseMetricsTest, IdentityPoseHasNoError) {
   const Pose pose = At({10.0, -20.0, 800.0}, RotZ(30.0));
   EXPECT_EQ(AddErrorMm(BoxCorners(), pose, pose), 0.0);
   EXPECT_EQ(AddSErrorMm(BoxCorners(), PointKdTree(BoxCorners()), pose, pose), 0.0);
-  EXPECT_EQ(Projection2DErrorPx(BoxCorners(), pose, pose, Camera()), 0.0);
+  EXPECT_EQ(Projection2DErrorPx(BoxCorners(), pose, pose, test::RoundVgaCamera()), 0.0);
 }
 
 TEST(PoseMetricsTest, PureTranslationMovesEveryPointByItsLength) {
@@ -77,20 +76,22 @@ TEST(PoseMetricsTest, AddSOfAKnownOffsetIsTheNearestPointDistance) {
 TEST(PoseMetricsTest, ProjectionErrorOfALateralShift) {
   // At z = 1000 mm with f = 500 px, 10 mm sideways is 5 px for every point.
   const std::vector<Eigen::Vector3d> points = {{0, 0, 0}, {0, 0, 0}};
-  EXPECT_NEAR(Projection2DErrorPx(points, At({10, 0, 1000}), At({0, 0, 1000}), Camera()), 5.0,
-              1e-12);
+  EXPECT_NEAR(
+      Projection2DErrorPx(points, At({10, 0, 1000}), At({0, 0, 1000}), test::RoundVgaCamera()), 5.0,
+      1e-12);
 }
 
 TEST(PoseMetricsTest, ProjectionErrorIsInfiniteBehindTheCamera) {
-  EXPECT_TRUE(
-      std::isinf(Projection2DErrorPx(BoxCorners(), At({0, 0, -800}), At({0, 0, 800}), Camera())));
-  EXPECT_TRUE(ProjectedBox(BoxCorners(), At({0, 0, -800}), Camera()).empty());
+  EXPECT_TRUE(std::isinf(Projection2DErrorPx(BoxCorners(), At({0, 0, -800}), At({0, 0, 800}),
+                                             test::RoundVgaCamera())));
+  EXPECT_TRUE(ProjectedBox(BoxCorners(), At({0, 0, -800}), test::RoundVgaCamera()).empty());
 }
 
 TEST(PoseMetricsTest, ProjectedBoxOfAFrontalSquare) {
   // Corners at +-50 mm, z = 1000: +-25 px around the principal point.
   const std::vector<Eigen::Vector3d> square = {{-50, -50, 0}, {50, 50, 0}};
-  EXPECT_EQ(ProjectedBox(square, At({0, 0, 1000}), Camera()), cv::Rect(295, 215, 50, 50));
+  EXPECT_EQ(ProjectedBox(square, At({0, 0, 1000}), test::RoundVgaCamera()),
+            cv::Rect(295, 215, 50, 50));
 }
 
 TEST(PoseMetricsTest, BoxIoU) {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_cameras.h"
 #include "util/error.h"
 
 namespace layermod {
@@ -21,16 +22,16 @@ Pose At(double x, double y, double z, double turn_about_z_deg = 0.0) {
       {x, y, z}};
 }
 
-PinholeCamera Camera() { return {500.0, 500.0, 320.0, 240.0, 640, 480}; }
-
 TEST(PoseScoringTest, CorrectAtTheThresholdAndNotBeyond) {
   const EvalModel rod = Rod(false);
   const EvalMetricOptions options;  // km 0.1: 10 mm for the rod
-  const PoseScore at = ScorePose(rod, At(0, 10, 1000), At(0, 0, 1000), Camera(), options);
+  const PoseScore at =
+      ScorePose(rod, At(0, 10, 1000), At(0, 0, 1000), test::RoundVgaCamera(), options);
   EXPECT_NEAR(at.error_mm, 10.0, 1e-12);
   EXPECT_TRUE(at.correct);
   EXPECT_FALSE(at.symmetric_metric);
-  const PoseScore beyond = ScorePose(rod, At(0, 10.5, 1000), At(0, 0, 1000), Camera(), options);
+  const PoseScore beyond =
+      ScorePose(rod, At(0, 10.5, 1000), At(0, 0, 1000), test::RoundVgaCamera(), options);
   EXPECT_FALSE(beyond.correct);
 }
 
@@ -38,7 +39,8 @@ TEST(PoseScoringTest, Proj2DAndBoxChecks) {
   const EvalModel rod = Rod(false);
   EvalMetricOptions options;
   // 10 mm at 1000 mm with f = 500: 5 px, exactly at the threshold.
-  const PoseScore score = ScorePose(rod, At(0, 10, 1000), At(0, 0, 1000), Camera(), options);
+  const PoseScore score =
+      ScorePose(rod, At(0, 10, 1000), At(0, 0, 1000), test::RoundVgaCamera(), options);
   EXPECT_NEAR(score.proj2d_px, 5.0, 1e-12);
   EXPECT_TRUE(score.proj2d_correct);
   // The rod's boxes are 50 x 0 px lines: no area, so no overlap.
@@ -48,10 +50,10 @@ TEST(PoseScoringTest, Proj2DAndBoxChecks) {
 
 TEST(PoseScoringTest, SymmetricObjectsUseAddS) {
   const PoseScore turned_plain =
-      ScorePose(Rod(false), At(0, 0, 1000, 180.0), At(0, 0, 1000), Camera(), {});
+      ScorePose(Rod(false), At(0, 0, 1000, 180.0), At(0, 0, 1000), test::RoundVgaCamera(), {});
   EXPECT_FALSE(turned_plain.correct);
   const PoseScore turned_symmetric =
-      ScorePose(Rod(true), At(0, 0, 1000, 180.0), At(0, 0, 1000), Camera(), {});
+      ScorePose(Rod(true), At(0, 0, 1000, 180.0), At(0, 0, 1000), test::RoundVgaCamera(), {});
   EXPECT_TRUE(turned_symmetric.symmetric_metric);
   EXPECT_NEAR(turned_symmetric.error_mm, 0.0, 1e-9);
   EXPECT_TRUE(turned_symmetric.correct);
@@ -60,7 +62,9 @@ TEST(PoseScoringTest, SymmetricObjectsUseAddS) {
 TEST(PoseScoringTest, KmScalesTheThreshold) {
   EvalMetricOptions options;
   options.km = 0.2;
-  EXPECT_TRUE(ScorePose(Rod(false), At(0, 15, 1000), At(0, 0, 1000), Camera(), options).correct);
+  EXPECT_TRUE(
+      ScorePose(Rod(false), At(0, 15, 1000), At(0, 0, 1000), test::RoundVgaCamera(), options)
+          .correct);
 }
 
 TEST(PoseScoringTest, ValidatesOptions) {

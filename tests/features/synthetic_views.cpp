@@ -20,17 +20,6 @@ RenderedView EmptyView(const cv::Rect& roi) {
 
 }  // namespace
 
-PinholeCamera KinectCamera() {
-  PinholeCamera camera;
-  camera.fx = 572.4114;
-  camera.fy = 573.57043;
-  camera.cx = 325.2611;
-  camera.cy = 242.04899;
-  camera.width = 640;
-  camera.height = 480;
-  return camera;
-}
-
 cv::Mat PlaneDepth(const PinholeCamera& camera, const cv::Rect& roi,
                    const Eigen::Vector3d& point_mm, const Eigen::Vector3d& normal) {
   cv::Mat depth(roi.size(), CV_32F);

@@ -7,11 +7,9 @@
 
 #include "geometry/camera.h"
 #include "render/rasterizer.h"
+#include "support/test_cameras.h"
 
 namespace layermod::test {
-
-// LineMOD's Kinect intrinsics, principal point deliberately off the image centre.
-PinholeCamera KinectCamera();
 
 // Depth (mm) of the plane through `point_mm` with normal `normal` seen through each camera pixel
 // of `roi` (exact ray-plane intersection).

@@ -19,6 +19,7 @@
 #include "mesh/model.h"
 #include "mesh/sample_part.h"
 #include "pipeline/training.h"
+#include "support/test_cameras.h"
 #include "templates/archive.h"
 #include "util/atomic_file.h"
 
@@ -37,20 +38,10 @@ std::string EncodePng(const cv::Mat& image) {
   return {bytes.begin(), bytes.end()};
 }
 
-PinholeCamera SmallCamera() {
-  PinholeCamera camera;
-  camera.fx = camera.fy = 60.0;
-  camera.cx = 31.5;
-  camera.cy = 23.5;
-  camera.width = 64;
-  camera.height = 48;
-  return camera;
-}
-
 TrainingRequest TinyRequest() {
   TrainingRequest request;
   request.name = "bracket";
-  request.camera = SmallCamera();
+  request.camera = test::TinyCamera();
   request.camera.fx = request.camera.fy = 300.0;
   request.camera.width = 320;
   request.camera.height = 240;
@@ -82,7 +73,7 @@ void WriteProfileSeeds(const fs::path& dir, const fs::path& work) {
 }
 
 void WriteCaptureSeeds(const fs::path& dir) {
-  const PinholeCamera camera = SmallCamera();
+  const PinholeCamera camera = test::TinyCamera();
   cv::Mat depth(camera.height, camera.width, CV_16U, cv::Scalar(900));
   cv::rectangle(depth, {20, 12, 24, 20}, cv::Scalar(700), cv::FILLED);
   depth(cv::Rect(0, 0, 6, 6)).setTo(0);

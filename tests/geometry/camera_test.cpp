@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/matchers.h"
+#include "support/test_cameras.h"
 #include "support/test_paths.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -13,22 +14,20 @@
 namespace layermod {
 namespace {
 
-PinholeCamera Kinect() { return {572.4114, 573.57043, 325.2611, 242.04899, 640, 480}; }
-
 TEST(CameraTest, ProjectBackprojectRoundTrip) {
-  const PinholeCamera camera = Kinect();
+  const PinholeCamera camera = test::KinectCamera();
   const Eigen::Vector3d point(12.0, -40.0, 800.0);
   const Eigen::Vector2d pixel = camera.Project(point);
   EXPECT_THAT(camera.Backproject(pixel, 800.0), test::MatrixNear(point, 1e-9));
 }
 
 TEST(CameraTest, ScaledKeepsContinuousCoordinates) {
-  const PinholeCamera half = Kinect().Scaled(0.5);
+  const PinholeCamera half = test::KinectCamera().Scaled(0.5);
   EXPECT_EQ(half.width, 320);
   EXPECT_EQ(half.height, 240);
   const Eigen::Vector3d point(50.0, 20.0, 700.0);
   // (u + 0.5) halves exactly.
-  const Eigen::Vector2d full = Kinect().Project(point);
+  const Eigen::Vector2d full = test::KinectCamera().Project(point);
   const Eigen::Vector2d scaled = half.Project(point);
   EXPECT_NEAR(scaled.x() + 0.5, (full.x() + 0.5) * 0.5, 1e-9);
   EXPECT_NEAR(scaled.y() + 0.5, (full.y() + 0.5) * 0.5, 1e-9);
@@ -39,14 +38,14 @@ TEST(CameraTest, LoadsBopCameraFile) {
   WriteFileAtomically(dir / "camera.json",
                       R"({"cx": 325.2611, "cy": 242.04899, "depth_scale": 1.0, "fx": 572.4114,
                           "fy": 573.57043, "height": 480, "width": 640})");
-  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), Kinect());
+  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), test::KinectCamera());
 }
 
 TEST(CameraTest, WrittenJsonReadsBackAsTheSameCamera) {
   test::TempDir dir;
-  WriteFileAtomically(dir / "camera.json", CameraJson(Kinect()).dump());
-  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), Kinect());
-  EXPECT_EQ(CameraJson(Kinect()).size(), 6u);  // exactly the six fields, nothing else
+  WriteFileAtomically(dir / "camera.json", CameraJson(test::KinectCamera()).dump());
+  EXPECT_EQ(LoadCameraJson(dir / "camera.json"), test::KinectCamera());
+  EXPECT_EQ(CameraJson(test::KinectCamera()).size(), 6u);  // exactly the six fields, nothing else
 }
 
 TEST(CameraTest, MissingFieldIsNamed) {

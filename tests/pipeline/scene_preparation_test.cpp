@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline/scene_preparation.h"
+#include "support/test_cameras.h"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +8,6 @@
 
 namespace layermod {
 namespace {
-
-PinholeCamera VgaCamera() { return {572.4, 573.6, 325.3, 242.0, 640, 480}; }
 
 // A colour image with smooth blobs (gradients everywhere) and a tilted, bumpy depth surface.
 struct Frame {
@@ -36,10 +35,11 @@ TEST(ScenePreparationTest, ARegionIsAlignedAndMatchesTheWholeImageAwayFromItsBor
   cv::RNG rng(71);
   const Frame frame = RandomFrame(rng);
   const FeatureOptions features;
-  const PreparedScene whole = PrepareScene(frame.color, frame.depth_mm, VgaCamera(), features);
+  const PreparedScene whole =
+      PrepareScene(frame.color, frame.depth_mm, test::RoundedKinectCamera(), features);
   const cv::Rect asked(203, 141, 190, 133);
   const PreparedRegion region =
-      PrepareSceneRegion(frame.color, frame.depth_mm, VgaCamera(), features, asked);
+      PrepareSceneRegion(frame.color, frame.depth_mm, test::RoundedKinectCamera(), features, asked);
   const int align = RegionAlignmentPx(features);
   EXPECT_EQ(align, features.spread_px.back() << (features.pyramid_levels - 1));
   EXPECT_EQ(region.region_px.x % align, 0);
@@ -72,11 +72,13 @@ TEST(ScenePreparationTest, RegionsAreClippedToTheImage) {
   cv::RNG rng(72);
   const Frame frame = RandomFrame(rng);
   const FeatureOptions features;
-  const PreparedRegion corner = PrepareSceneRegion(frame.color, frame.depth_mm, VgaCamera(),
-                                                   features, cv::Rect(600, 450, 100, 100));
+  const PreparedRegion corner =
+      PrepareSceneRegion(frame.color, frame.depth_mm, test::RoundedKinectCamera(), features,
+                         cv::Rect(600, 450, 100, 100));
   EXPECT_EQ(corner.region_px.br(), cv::Point(640, 480));
-  const PreparedRegion outside = PrepareSceneRegion(frame.color, frame.depth_mm, VgaCamera(),
-                                                    features, cv::Rect(700, 500, 10, 10));
+  const PreparedRegion outside =
+      PrepareSceneRegion(frame.color, frame.depth_mm, test::RoundedKinectCamera(), features,
+                         cv::Rect(700, 500, 10, 10));
   EXPECT_TRUE(outside.region_px.empty());
   EXPECT_EQ(outside.scene.LevelCount(), 0);
 }

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/test_cameras.h"
 #include "support/test_paths.h"
 #include "templates/archive.h"
 #include "util/error.h"
@@ -12,13 +13,11 @@
 namespace layermod {
 namespace {
 
-PinholeCamera SampleCamera() { return {572.0, 572.0, 319.5, 239.5, 640, 480}; }
-
 TrainingRequest TinyRequest() {
   TrainingRequest request;
   request.obj_id = 3;
   request.name = "bracket";
-  request.camera = SampleCamera();
+  request.camera = test::VgaCamera();
   request.profile.depth_min_mm = 600.0;
   request.profile.depth_max_mm = 900.0;
   request.profile.views.even_spacing_deg = 0.0;
@@ -77,7 +76,7 @@ TEST(TrainingTest, TrainsWritesAndReloadsIdentically) {
   for (std::size_t i = 0; i < templates.size(); ++i) {
     ExpectSameTemplate(loaded.templates()[i], templates[i]);
   }
-  EXPECT_EQ(loaded.camera(), SampleCamera());
+  EXPECT_EQ(loaded.camera(), test::VgaCamera());
   const ArchiveObject& object = loaded.Object(3);
   EXPECT_EQ(object.name, "bracket");
   EXPECT_NEAR(object.sphere.radius, SampleModel().sphere.radius, 1e-9);

@@ -21,8 +21,6 @@ const RenderMesh& SampleRenderMesh() {
   return mesh;
 }
 
-PinholeCamera VgaCamera() { return {572.0, 572.0, 319.5, 239.5, 640, 480}; }
-
 Pose SamplePose(double distance_mm) {
   Pose pose = CamFromModelForView({40.0, 35.0, 10.0}, SampleModel().sphere.centre, distance_mm);
   pose.t += Eigen::Vector3d(60.0, -30.0, 0.0);  // off the optical axis

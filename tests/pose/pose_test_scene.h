@@ -6,13 +6,13 @@
 #include "geometry/camera.h"
 #include "geometry/pose.h"
 #include "mesh/model.h"
+#include "support/test_cameras.h"
 
 namespace layermod::test {
 
 // The bundled sample part, its render mesh and a VGA camera.
 const Model& SampleModel();
 const RenderMesh& SampleRenderMesh();
-PinholeCamera VgaCamera();
 
 // A ground-truth pose of the sample at `distance_mm`, seen from above and off-centre.
 Pose SamplePose(double distance_mm);

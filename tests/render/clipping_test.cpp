@@ -4,14 +4,13 @@
 #include <gtest/gtest.h>
 
 #include "geometry/camera.h"
+#include "support/test_cameras.h"
 
 namespace layermod::render_internal {
 namespace {
 
-PinholeCamera Camera() { return {572.4, 573.6, 325.3, 242.0, 640, 480}; }
-
 TEST(ClippingTest, TriangleInsideIsUnchanged) {
-  const ScreenProjection projection(Camera(), 1.0f);
+  const ScreenProjection projection(test::RoundedKinectCamera(), 1.0f);
   const Eigen::Vector3f a(0, 0, 500), b(50, 0, 600), c(0, 40, 700);
   const ClipPolygon polygon = ClipTriangle(a, b, c, kBehindNear | kOutsideLeft, projection);
   ASSERT_EQ(polygon.size, 3);
@@ -21,7 +20,7 @@ TEST(ClippingTest, TriangleInsideIsUnchanged) {
 }
 
 TEST(ClippingTest, NearPlaneCutsOffTheVertexBehind) {
-  const ScreenProjection projection(Camera(), 10.0f);
+  const ScreenProjection projection(test::RoundedKinectCamera(), 10.0f);
   const ClipPolygon polygon =
       ClipTriangle({0, 0, -100}, {50, 0, 600}, {0, 40, 700}, kBehindNear, projection);
   ASSERT_EQ(polygon.size, 4);
@@ -34,7 +33,7 @@ TEST(ClippingTest, NearPlaneCutsOffTheVertexBehind) {
 }
 
 TEST(ClippingTest, TriangleOutsideVanishes) {
-  const ScreenProjection projection(Camera(), 1.0f);
+  const ScreenProjection projection(test::RoundedKinectCamera(), 1.0f);
   EXPECT_EQ(ClipTriangle({0, 0, -1}, {5, 0, -2}, {0, 5, 0.5f}, kBehindNear, projection).size, 0);
   // Far to the left of the guard band.
   EXPECT_EQ(
@@ -45,7 +44,7 @@ TEST(ClippingTest, TriangleOutsideVanishes) {
 
 TEST(ClippingTest, SharedEdgeIsCutAtIdenticalPoints) {
   // Two triangles sharing edge ab, listing it in opposite directions, as adjacent faces do.
-  const ScreenProjection projection(Camera(), 1.0f);
+  const ScreenProjection projection(test::RoundedKinectCamera(), 1.0f);
   const Eigen::Vector3f a(-13.7f, 2.9f, -57.3f), b(21.1f, -8.3f, 311.9f);
   const ClipPolygon first = ClipTriangle(a, b, {40, 30, 200}, kBehindNear, projection);
   const ClipPolygon second = ClipTriangle(b, a, {-40, 30, 250}, kBehindNear, projection);

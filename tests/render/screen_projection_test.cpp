@@ -7,14 +7,13 @@
 #include <limits>
 
 #include "render/triangle_raster.h"
+#include "support/test_cameras.h"
 
 namespace layermod::render_internal {
 namespace {
 
-PinholeCamera Camera() { return {572.4, 573.6, 325.3, 242.0, 640, 480}; }
-
 TEST(ScreenProjectionTest, PixelCentresMapToExactFixedPointCentres) {
-  const PinholeCamera camera = Camera();
+  const PinholeCamera camera = test::RoundedKinectCamera();
   const ScreenProjection projection(camera, 1.0f);
   for (const int u : {0, 17, 325, 639}) {
     for (const int v : {0, 100, 479}) {
@@ -34,7 +33,7 @@ std::uint32_t OutcodeOf(const ScreenProjection& projection, const Eigen::Vector3
 }
 
 TEST(ScreenProjectionTest, OutcodesNameTheViolatedPlanes) {
-  const PinholeCamera camera = Camera();
+  const PinholeCamera camera = test::RoundedKinectCamera();
   const ScreenProjection projection(camera, 5.0f);
   EXPECT_EQ(OutcodeOf(projection, {0, 0, 500}), 0u);
   EXPECT_EQ(OutcodeOf(projection, {0, 0, 5}), kBehindNear);  // on the near plane counts as behind
@@ -53,7 +52,7 @@ TEST(ScreenProjectionTest, OutcodesNameTheViolatedPlanes) {
 
 TEST(ScreenProjectionTest, GuardPlanesMatchTheGuardBand) {
   // A point on the left guard plane projects onto the guard band's edge.
-  const PinholeCamera camera = Camera();
+  const PinholeCamera camera = test::RoundedKinectCamera();
   const ScreenProjection projection(camera, 1.0f);
   const Eigen::Vector3f on_left = camera.Backproject({-kGuardBandPx, 100}, 300.0).cast<float>();
   // The plane value is fx * z * (u + guard): 1 here is far below a thousandth of a pixel.

@@ -154,8 +154,6 @@ RenderMesh MakeGradientSquare(double size_mm, int cells) {
   return mesh;
 }
 
-PinholeCamera KinectCamera() { return {572.4114, 573.57043, 325.2611, 242.04899, 640, 480}; }
-
 Eigen::Vector3d PixelRay(const PinholeCamera& camera, int x, int y) {
   return {(x - camera.cx) / camera.fx, (y - camera.cy) / camera.fy, 1.0};
 }

@@ -8,6 +8,7 @@
 #include "geometry/camera.h"
 #include "geometry/pose.h"
 #include "mesh/render_mesh.h"
+#include "support/test_cameras.h"
 
 namespace layermod::test {
 
@@ -26,9 +27,6 @@ RenderMesh MakeBox(const Eigen::Vector3d& half_size_mm, int cells,
 // Square in the model's z = 0 plane, side `size_mm`, split into cells x cells quads; vertex
 // colours red = (x / size + 0.5), green = (y / size + 0.5), blue = 1 (linear over the square).
 RenderMesh MakeGradientSquare(double size_mm, int cells);
-
-// The Kinect-like camera of the LineMOD data sets.
-PinholeCamera KinectCamera();
 
 // Direction (z = 1) of the ray through the centre of pixel (x, y).
 Eigen::Vector3d PixelRay(const PinholeCamera& camera, int x, int y);

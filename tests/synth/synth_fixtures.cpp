@@ -9,17 +9,6 @@
 namespace layermod::test {
 namespace fs = std::filesystem;
 
-PinholeCamera SmallCamera() {
-  PinholeCamera camera;
-  camera.fx = 286.2;
-  camera.fy = 286.8;
-  camera.cx = 162.4;
-  camera.cy = 120.8;
-  camera.width = 320;
-  camera.height = 240;
-  return camera;
-}
-
 fs::path WriteBracketModels(const fs::path& dir) {
   const fs::path models = dir / "models";
   fs::create_directories(models);

@@ -6,12 +6,10 @@
 #include <optional>
 #include <vector>
 
+#include "support/test_cameras.h"
 #include "synth/synth_options.h"
 
 namespace layermod::test {
-
-// 320 x 240, the Kinect's intrinsics halved: fast, same field of view.
-PinholeCamera SmallCamera();
 
 // `dir`/models/obj_000001.ply: the bundled sample bracket (always available).
 std::filesystem::path WriteBracketModels(const std::filesystem::path& dir);
