@@ -18,7 +18,7 @@ GUI_PACKAGES=(
   xvfb xauth libgl1-mesa-dri
 )
 TOOL_PACKAGES=(
-  clang clang-format libclang-rt-14-dev dpkg-dev file
+  clang clang-format clang-tidy libclang-rt-14-dev dpkg-dev file
 )
 
 missing=()

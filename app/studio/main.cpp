@@ -6,14 +6,14 @@
 #include <QSurfaceFormat>
 #include <cstdio>
 
-#include "ui/capture_source.h"
-#include "ui/detection_panel.h"
-#include "ui/focus_ring_style.h"
-#include "ui/main_window.h"
-#include "ui/screenshot.h"
-#include "ui/studio_dialogs.h"
-#include "ui/studio_session.h"
-#include "ui/template_browser.h"
+#include "ui/common/studio_dialogs.h"
+#include "ui/common/studio_session.h"
+#include "ui/detection/capture_source.h"
+#include "ui/detection/detection_panel.h"
+#include "ui/templates/template_browser.h"
+#include "ui/widgets/focus_ring_style.h"
+#include "ui/window/main_window.h"
+#include "ui/window/screenshot.h"
 #include "util/version.h"
 
 namespace {

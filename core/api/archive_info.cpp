@@ -60,7 +60,7 @@ nlohmann::json ObjectJson(const TemplateArchive& archive, const ArchiveObject& o
                           {"mesh_file", object.mesh_file},
                           {"mesh_hash", object.mesh_hash},
                           {"units", object.units},
-                          {"radius_mm", object.sphere.radius},
+                          {"radius_mm", object.sphere.radius_mm},
                           {"diameter_mm", object.diameter_mm}};
   entry["templates"] = archive.TemplatesOf(object.obj_id).size();
   entry["views"] = ToJson(object.profile)["views"];  // the envelope and the up axis

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include <layermod/detector.h>
 
-#include <cfloat>
 #include <opencv2/core.hpp>
 
 #include "api/archive_access.h"
 #include "api/detection_convert.h"
 #include "pipeline/detector.h"
 #include "pipeline/detector_options.h"
+#include "scene/depth_mm.h"
 #include "util/error.h"
 
 namespace layermod::api {
@@ -47,25 +47,13 @@ std::string TypeName(const cv::Mat& image) {
 
 // The core detector takes CV_32F depth in mm with 0 = no measurement.
 cv::Mat DepthMm(const Capture& capture) {
-  const cv::Mat& depth = capture.depth;
-  if (depth.empty()) return {};
-  if (depth.type() == CV_16UC1) {
-    if (!(capture.depth_scale > 0.0)) throw Error("capture: depth_scale must be > 0");
-    cv::Mat depth_mm;
-    depth.convertTo(depth_mm, CV_32F, capture.depth_scale);
-    return depth_mm;
+  if (capture.depth.empty()) return {};
+  try {
+    return DepthToMillimetres(capture.depth, DepthScale{capture.depth_scale, 1.0});
+  } catch (const Error& error) {
+    throw Error("capture: " + std::string(error.what()) + " (depth " + TypeName(capture.depth) +
+                "; expected CV_16UC1 scaled to mm by depth_scale, or CV_32FC1 mm)");
   }
-  if (depth.type() != CV_32FC1) {
-    throw Error(
-        "capture: depth must be CV_16UC1 (scaled to mm by depth_scale) or CV_32FC1 mm, got " +
-        TypeName(depth));
-  }
-  if (cv::checkRange(depth, true, nullptr, 0.0, FLT_MAX)) return depth;
-  cv::Mat depth_mm = depth.clone();
-  depth_mm.forEach<float>([](float& value, const int*) {
-    if (!(value >= 0.0f && value <= FLT_MAX)) value = 0.0f;  // NaN, infinite, negative
-  });
-  return depth_mm;
 }
 
 }  // namespace

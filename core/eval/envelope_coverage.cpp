@@ -80,7 +80,7 @@ ViewEnvelope::ViewEnvelope(const TemplateArchive& archive, std::int32_t obj_id) 
   depth_max_mm_ = object.layer_depths_mm.back();
   layer_spacing_mm_ = object.layer_depths_mm.size() > 1
                           ? (depth_max_mm_ - depth_min_mm_) / (object.layer_depths_mm.size() - 1)
-                          : object.sphere.radius;
+                          : object.sphere.radius_mm;
 }
 
 EnvelopeCheck ViewEnvelope::Check(const Pose& cam_from_model) const {

@@ -185,7 +185,7 @@ Sphere MinimalEnclosingSphere(const std::vector<Eigen::Vector3d>& points) {
   // Rounding may leave a point a hair outside; the ball must contain every point.
   double max_sqr = 0.0;
   for (const auto& p : points) max_sqr = std::max(max_sqr, (p - mid - sphere.centre).squaredNorm());
-  sphere.radius = std::max(sphere.radius, std::sqrt(max_sqr));
+  sphere.radius_mm = std::max(sphere.radius_mm, std::sqrt(max_sqr));
   sphere.centre += mid;
   return sphere;
 }

@@ -8,7 +8,7 @@ namespace layermod {
 
 struct Sphere {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double radius = 0.0;
+  double radius_mm = 0.0;
 };
 
 // Exact minimal enclosing sphere of `points` (Welzl's algorithm with move-to-front, expected linear

@@ -160,7 +160,7 @@ void CheckNotDegenerate(const Model& model) {
   const double largest = extent.maxCoeff();
   const int non_zero = (extent.array() > 1e-9 * std::max(largest, 1.0)).count();
   // A flat plate is a valid (thin) part; a line or a point is not.
-  if (model.sphere.radius <= 0.0 || non_zero < 2) {
+  if (model.sphere.radius_mm <= 0.0 || non_zero < 2) {
     throw FormatError(Quoted(model.source) +
                       ": degenerate mesh (all vertices on a line or at one point)");
   }
@@ -177,7 +177,7 @@ void AddWarnings(Model& model) {
     AddWarning(model,
                Quoted(model.source) + ": model " + kOriginWarningMarker + " its centre (" +
                    FormatMm(model.sphere.centre.norm()) + " away, radius " +
-                   FormatMm(model.sphere.radius) +
+                   FormatMm(model.sphere.radius_mm) +
                    "); poses refer to the mesh's origin, as ground truth in the mesh's frame "
                    "(BOP) does; re-centring would make them refer to the centre instead");
   }
@@ -220,7 +220,7 @@ Model LoadModel(const fs::path& path, const LoadModelOptions& options) {
 }
 
 bool OriginFarFromCentre(const Model& model) {
-  return model.sphere.centre.norm() > kOriginWarningFraction * model.sphere.radius;
+  return model.sphere.centre.norm() > kOriginWarningFraction * model.sphere.radius_mm;
 }
 
 void RecentreOnSphere(Model& model) {

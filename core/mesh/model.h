@@ -61,7 +61,7 @@ struct Model {
   Eigen::Vector3d bbox_max = Eigen::Vector3d::Zero();
   std::vector<std::string> warnings;  // origin far from centre, metre-scale guess, ...
 
-  double DiameterMm() const { return 2.0 * sphere.radius; }
+  double DiameterMm() const { return 2.0 * sphere.radius_mm; }
 };
 
 // Loads any mesh assimp reads (PLY, STL, OBJ, OFF, glTF, ...), keeps vertex colours, merges

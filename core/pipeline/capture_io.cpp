@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "dataset/image_header.h"
+#include "scene/depth_mm.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 
@@ -40,21 +41,14 @@ cv::Mat LoadColor(const CaptureFiles& files, const PinholeCamera& camera) {
 cv::Mat LoadDepth(const CaptureFiles& files, const PinholeCamera& camera) {
   const cv::Mat raw =
       ReadImage(files.depth, cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR, files, camera);
-  if (raw.channels() != 1) throw FormatError(Quoted(files.depth) + ": depth must have 1 channel");
+  const DepthScale scale{files.depth_scale,
+                         files.float_depth_unit == DepthUnit::kMetre ? 1000.0 : 1.0};
   cv::Mat depth_mm;
-  if (raw.depth() == CV_16U) {
-    raw.convertTo(depth_mm, CV_32F, files.depth_scale);
-  } else if (raw.depth() == CV_32F) {
-    const double scale = files.float_depth_unit == DepthUnit::kMetre ? 1000.0 : 1.0;
-    depth_mm = raw * scale;
-  } else if (raw.depth() == CV_8U) {
-    throw FormatError(Quoted(files.depth) + ": 8-bit depth image; expected 16-bit millimetres");
-  } else {
-    throw FormatError(Quoted(files.depth) + ": unsupported depth pixel type");
+  try {
+    depth_mm = DepthToMillimetres(raw, scale);
+  } catch (const Error& error) {
+    throw FormatError(Quoted(files.depth) + ": " + error.what());
   }
-  depth_mm.forEach<float>([](float& value, const int*) {
-    if (!std::isfinite(value) || value < 0.0f) value = 0.0f;
-  });
   if (cv::countNonZero(depth_mm) == 0) {
     throw FormatError(Quoted(files.depth) + ": no valid depth (all pixels are 0 or invalid)");
   }

@@ -46,7 +46,7 @@ Detection RefineCandidate(const RawMatch& match, const TemplateArchive& archive,
 bool SameInstance(const Detection& a, const Detection& b, const ArchiveObject& object) {
   const Eigen::Vector3d centre_a = a.cam_from_model * object.sphere.centre;
   const Eigen::Vector3d centre_b = b.cam_from_model * object.sphere.centre;
-  return (centre_a - centre_b).norm() < object.sphere.radius;
+  return (centre_a - centre_b).norm() < object.sphere.radius_mm;
 }
 
 }  // namespace

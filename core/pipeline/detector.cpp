@@ -99,6 +99,7 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
     }
   }
   std::vector<TemplateSearch> searches;
+  searches.reserve(points_by_layer.size());
   for (const auto& [layer, points] : points_by_layer) {
     searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points});
   }
@@ -279,7 +280,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       auto stage_start = Clock::now();
       diagnostics.division =
           DivideScene(cell_depth_mm, used.depth_mm.size(), object.layer_depths_mm,
-                      object.sphere.radius, options.regions);
+                      object.sphere.radius_mm, options.regions);
       result.timings.regions_ms += MsSince(stage_start);
 
       stage_start = Clock::now();

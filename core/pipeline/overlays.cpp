@@ -142,7 +142,7 @@ void DrawPoses(cv::Mat& canvas, const std::vector<Detection>& detections, const 
                        view.roi.tl());
       cv::drawContours(canvas, contours, -1, cv::Scalar(0, 255, 0), 2, cv::LINE_AA);
     }
-    DrawAxes(canvas, detection.cam_from_model, object.sphere.centre, object.sphere.radius * 0.8,
+    DrawAxes(canvas, detection.cam_from_model, object.sphere.centre, object.sphere.radius_mm * 0.8,
              camera);
     char text[96];
     std::snprintf(text, sizeof(text), "%s %.1f%% conf %.2f", detection.name.c_str(),

@@ -182,14 +182,14 @@ std::size_t TrainingMemoryLimitBytes() {
 TrainingPlan PlanTraining(const Model& model, const TrainingRequest& request) {
   request.Validate();
   TrainingPlan plan;
-  plan.radius_mm = model.sphere.radius;
-  plan.layer_depths_mm =
-      DepthLayers(request.profile.depth_min_mm, request.profile.depth_max_mm, model.sphere.radius);
+  plan.radius_mm = model.sphere.radius_mm;
+  plan.layer_depths_mm = DepthLayers(request.profile.depth_min_mm, request.profile.depth_max_mm,
+                                     model.sphere.radius_mm);
   RefuseOversizedRun(CountViews(request.profile.views) * plan.layer_depths_mm.size(),
                      request.profile.features);
   plan.views = SampleViews(request.profile.views);
   if (plan.views.empty()) throw Error("views: the view ranges produce no view");
-  if (plan.layer_depths_mm.front() <= model.sphere.radius) {
+  if (plan.layer_depths_mm.front() <= model.sphere.radius_mm) {
     throw Error("depth range: D_min must exceed the sphere radius (camera inside the object)");
   }
   return plan;

@@ -100,26 +100,6 @@ bool RegionDivision::BlockContains(const SceneBlock& block, cv::Point pixel) con
   return block.cells.at<std::uint8_t>(pixel.y / cell_size_px, pixel.x / cell_size_px) != 0;
 }
 
-cv::Mat DepthToMillimetres(const cv::Mat& depth, double depth_scale_mm) {
-  if (depth.empty()) throw Error("depth image is empty");
-  if (depth.channels() != 1) throw Error("depth image must have one channel");
-  if (!(depth_scale_mm > 0.0) || !std::isfinite(depth_scale_mm)) {
-    throw Error("depth scale must be a positive number");
-  }
-  cv::Mat depth_mm;
-  if (depth.depth() == CV_16U) {
-    depth.convertTo(depth_mm, CV_32F, depth_scale_mm);
-  } else if (depth.depth() == CV_32F) {
-    depth_mm = depth * depth_scale_mm;
-  } else {
-    throw Error("depth image must be 16-bit (mm) or 32-bit float, got another pixel type");
-  }
-  depth_mm.forEach<float>([](float& value, const int*) {
-    if (!std::isfinite(value) || value < 0.0f) value = 0.0f;
-  });
-  return depth_mm;
-}
-
 cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell) {
   if (depth_mm.type() != CV_32F) throw Error("region division: depth must be CV_32F mm");
   if (cell < 1) throw Error("region division: cell size must be positive");

@@ -39,10 +39,6 @@ struct RegionDivision {
   bool BlockContains(const SceneBlock& block, cv::Point pixel) const;
 };
 
-// Converts a depth image to CV_32F millimetres with 0 for invalid (0, NaN, inf, negative).
-// Accepts CV_16U (mm, scaled by `depth_scale_mm`) and CV_32F (mm). Throws Error otherwise.
-cv::Mat DepthToMillimetres(const cv::Mat& depth, double depth_scale_mm = 1.0);
-
 // Divides a depth map (CV_32F mm, 0 = invalid) into blocks of nearly constant depth, each
 // attached to the nearest of `layer_depths_mm`. `radius_mm`: the object's sphere radius.
 RegionDivision DivideScene(const cv::Mat& depth_mm, const std::vector<double>& layer_depths_mm,

@@ -125,7 +125,7 @@ std::optional<PlacedItem> PlaceNear(const SceneLayout& layout, const RenderMesh&
     item.footprint_centre += shift;
     item.bound.centre.head<2>() += shift;
     const double clearance = (item.bound.centre - layout.camera.centre_in_world).norm();
-    if (clearance < item.bound.radius + kCameraClearanceMm) continue;
+    if (clearance < item.bound.radius_mm + kCameraClearanceMm) continue;
     if (Overlaps(item, layout.items) || !OnTable(item, layout.table_extent)) continue;
     return item;
   }
@@ -153,7 +153,7 @@ PlacedItem PlaceUpright(const RenderMesh& mesh, const Sphere& sphere, std::int32
   item.footprint_centre = xy;
   item.footprint_radius_mm = radius_xy;
   item.bound.centre = item.world_from_item * sphere.centre;
-  item.bound.radius = sphere.radius;
+  item.bound.radius_mm = sphere.radius_mm;
   return item;
 }
 
@@ -294,12 +294,12 @@ void PlaceSightOccluder(SceneLayout& layout, double cover, std::mt19937_64& rng)
   const double angle = Uniform(rng, -kPi, kPi);
   const Eigen::Vector3d direction = std::cos(angle) * side + std::sin(angle) * up;
   const double scale = 1.0 - along;  // the occluder's size in the target's image terms
-  const double half_width = target.bound.radius * scale * Uniform(rng, 0.6, 1.2);
-  const double offset = (1.0 - cover) * (target.bound.radius + half_width) * scale;
+  const double half_width = target.bound.radius_mm * scale * Uniform(rng, 0.6, 1.2);
+  const double offset = (1.0 - cover) * (target.bound.radius_mm + half_width) * scale;
   layout.primitives.push_back(RandomPrimitive(false, rng));
   RenderMesh& mesh = layout.primitives.back();
   const Sphere sphere = PrimitiveSphere(mesh);
-  const double shrink = half_width / std::max(sphere.radius, 1.0);
+  const double shrink = half_width / std::max(sphere.radius_mm, 1.0);
   for (Eigen::Vector3f& p : mesh.positions) {
     p = ((p.cast<double>() - sphere.centre) * shrink).cast<float>();
   }
@@ -309,7 +309,7 @@ void PlaceSightOccluder(SceneLayout& layout, double cover, std::mt19937_64& rng)
   item.world_from_item.t = target.bound.centre + along * to_camera + offset * direction;
   item.footprint_centre = item.world_from_item.t.head<2>();
   item.bound.centre = item.world_from_item.t;
-  item.bound.radius = half_width;
+  item.bound.radius_mm = half_width;
   layout.items.push_back(item);
 }
 

@@ -25,7 +25,7 @@ struct ArchiveObject {
   std::string mesh_hash;     // hex digest of the mesh file bytes
   std::string units = "mm";  // units of the source mesh before conversion to mm
   Sphere sphere;             // circumscribing sphere in model mm
-  double diameter_mm = 0.0;  // 2 * sphere.radius
+  double diameter_mm = 0.0;  // 2 * sphere.radius_mm
   Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero();
   Eigen::Vector3d bbox_size = Eigen::Vector3d::Zero();
   std::vector<double> layer_depths_mm;  // layer_index -> depth

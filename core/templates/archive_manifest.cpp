@@ -28,19 +28,20 @@ nlohmann::json MeshJson(const MeshInfo& mesh) {
 }
 
 nlohmann::json ObjectJson(const ArchiveObject& object, const MeshInfo& mesh) {
-  return {{"obj_id", object.obj_id},
-          {"name", object.name},
-          {"mesh_file", object.mesh_file},
-          {"mesh_hash", object.mesh_hash},
-          {"units", object.units},
-          {"sphere",
-           {{"centre_mm", VectorJson(object.sphere.centre)}, {"radius_mm", object.sphere.radius}}},
-          {"diameter_mm", object.diameter_mm},
-          {"bbox_min_mm", VectorJson(object.bbox_min)},
-          {"bbox_size_mm", VectorJson(object.bbox_size)},
-          {"layer_depths_mm", object.layer_depths_mm},
-          {"profile", ToJson(object.profile)},
-          {"mesh", MeshJson(mesh)}};
+  return {
+      {"obj_id", object.obj_id},
+      {"name", object.name},
+      {"mesh_file", object.mesh_file},
+      {"mesh_hash", object.mesh_hash},
+      {"units", object.units},
+      {"sphere",
+       {{"centre_mm", VectorJson(object.sphere.centre)}, {"radius_mm", object.sphere.radius_mm}}},
+      {"diameter_mm", object.diameter_mm},
+      {"bbox_min_mm", VectorJson(object.bbox_min)},
+      {"bbox_size_mm", VectorJson(object.bbox_size)},
+      {"layer_depths_mm", object.layer_depths_mm},
+      {"profile", ToJson(object.profile)},
+      {"mesh", MeshJson(mesh)}};
 }
 
 nlohmann::json TableJson(const TableInfo& table) {
@@ -105,7 +106,7 @@ ArchiveObject ReadObject(const JsonFields& fields) {
   object.units = fields.String("units");
   const JsonFields sphere = fields.Object("sphere");
   object.sphere.centre = ReadVector(sphere, "centre_mm");
-  object.sphere.radius = sphere.Number("radius_mm");
+  object.sphere.radius_mm = sphere.Number("radius_mm");
   object.diameter_mm = fields.Number("diameter_mm");
   object.bbox_min = ReadVector(fields, "bbox_min_mm");
   object.bbox_size = ReadVector(fields, "bbox_size_mm");
@@ -138,7 +139,7 @@ void ValidateObject(const ArchiveObject& object) {
     throw FormatError(what + error.what());
   }
   const Sphere& sphere = object.sphere;
-  if (!sphere.centre.allFinite() || !std::isfinite(sphere.radius) || sphere.radius < 0.0) {
+  if (!sphere.centre.allFinite() || !std::isfinite(sphere.radius_mm) || sphere.radius_mm < 0.0) {
     throw FormatError(what + "sphere must be finite with a non-negative radius");
   }
   if (!std::isfinite(object.diameter_mm) || object.diameter_mm < 0.0) {

@@ -15,8 +15,8 @@ constexpr double kSphereTolerance = 1e-3;
 
 bool ModelMatchesObject(const Model& model, const ArchiveObject& object) {
   if (!object.mesh_hash.empty() && model.hash != object.mesh_hash) return false;
-  const double tolerance_mm = kSphereTolerance * std::max(1.0, object.sphere.radius);
-  return std::abs(model.sphere.radius - object.sphere.radius) <= tolerance_mm &&
+  const double tolerance_mm = kSphereTolerance * std::max(1.0, object.sphere.radius_mm);
+  return std::abs(model.sphere.radius_mm - object.sphere.radius_mm) <= tolerance_mm &&
          (model.sphere.centre - object.sphere.centre).norm() <= tolerance_mm;
 }
 
@@ -35,7 +35,7 @@ Model LoadModelForObject(const std::filesystem::path& mesh_path, const ArchiveOb
   LoadModelOptions options;
   options.units = object.units == "m" ? LengthUnit::kMetre : LengthUnit::kMillimetre;
   Model model = LoadModel(mesh_path, options);
-  const double tolerance_mm = kSphereTolerance * std::max(1.0, object.sphere.radius);
+  const double tolerance_mm = kSphereTolerance * std::max(1.0, object.sphere.radius_mm);
   if (object.sphere.centre.norm() <= tolerance_mm && model.sphere.centre.norm() > tolerance_mm) {
     RecentreOnSphere(model);
   }

@@ -33,7 +33,7 @@ TemplateArchive HandMadeArchive() {
   object.obj_id = 3;
   object.name = "part";
   object.mesh_file = "part.ply";
-  object.sphere.radius = 40.0;
+  object.sphere.radius_mm = 40.0;
   object.diameter_mm = 80.0;
   object.layer_depths_mm = {600.0, 800.0};
   manifest.objects.push_back(object);

@@ -16,14 +16,16 @@
 namespace {
 
 void CheckLoadedModel(const layermod::Model& model) {
-  if (model.mesh.n_faces() == 0 || !std::isfinite(model.sphere.radius) || model.sphere.radius < 0) {
+  if (model.mesh.n_faces() == 0 || !std::isfinite(model.sphere.radius_mm) ||
+      model.sphere.radius_mm < 0) {
     std::abort();
   }
   for (const auto vertex : model.mesh.vertices()) {
     const auto& point = model.mesh.point(vertex);
     const double distance =
         (Eigen::Vector3d(point[0], point[1], point[2]) - model.sphere.centre).norm();
-    if (!(distance <= model.sphere.radius * (1.0 + 1e-6) + 1e-6)) std::abort();  // sphere encloses
+    if (!(distance <= model.sphere.radius_mm * (1.0 + 1e-6) + 1e-6))
+      std::abort();  // sphere encloses
   }
 }
 

@@ -46,9 +46,9 @@ Sphere BruteForceSphere(const Points& points) {
   Sphere best{Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity()};
   auto consider = [&](const Points& support) {
     const auto sphere = Circumsphere(support);
-    if (!sphere || sphere->radius >= best.radius) return;
+    if (!sphere || sphere->radius_mm >= best.radius_mm) return;
     for (const auto& p : points) {
-      if ((p - sphere->centre).norm() > sphere->radius * (1.0 + 1e-9) + 1e-12) return;
+      if ((p - sphere->centre).norm() > sphere->radius_mm * (1.0 + 1e-9) + 1e-12) return;
     }
     best = *sphere;
   };
@@ -67,7 +67,7 @@ Sphere BruteForceSphere(const Points& points) {
 
 void ExpectContainsAll(const Sphere& sphere, const Points& points, double relative_tol) {
   for (const auto& p : points) {
-    ASSERT_LE((p - sphere.centre).norm(), sphere.radius * (1.0 + relative_tol) + 1e-12);
+    ASSERT_LE((p - sphere.centre).norm(), sphere.radius_mm * (1.0 + relative_tol) + 1e-12);
   }
 }
 
@@ -112,7 +112,7 @@ TEST(MinimalEnclosingSphereTest, MatchesBruteForceOnRandomAndDegenerateSets) {
     const Points points = RandomSet(rng, trial % 6);
     const Sphere expected = BruteForceSphere(points);
     const Sphere actual = MinimalEnclosingSphere(points);
-    ASSERT_NEAR(actual.radius, expected.radius, 1e-9 * (1.0 + expected.radius))
+    ASSERT_NEAR(actual.radius_mm, expected.radius_mm, 1e-9 * (1.0 + expected.radius_mm))
         << "trial " << trial << " kind " << trial % 6;
     ASSERT_THAT(actual.centre, MatrixNear(expected.centre, 1e-6)) << "trial " << trial;
     ExpectContainsAll(actual, points, 1e-12);
@@ -125,7 +125,7 @@ TEST(MinimalEnclosingSphereTest, CubeCornersGiveHalfDiagonal) {
     corners.emplace_back(i & 1 ? 30.0 : 10.0, i & 2 ? 5.0 : -15.0, i & 4 ? 2.0 : -18.0);
   }
   const Sphere sphere = MinimalEnclosingSphere(corners);
-  EXPECT_NEAR(sphere.radius, 0.5 * std::sqrt(3.0) * 20.0, 1e-9);
+  EXPECT_NEAR(sphere.radius_mm, 0.5 * std::sqrt(3.0) * 20.0, 1e-9);
   EXPECT_THAT(sphere.centre, MatrixNear(Eigen::Vector3d(20, -5, -8), 1e-9));
 }
 
@@ -139,7 +139,7 @@ TEST(MinimalEnclosingSphereTest, PointsOnASphereGiveThatSphere) {
                      55.0 * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized());
   }
   const Sphere sphere = MinimalEnclosingSphere(points);
-  EXPECT_NEAR(sphere.radius, 55.0, 1e-7);
+  EXPECT_NEAR(sphere.radius_mm, 55.0, 1e-7);
   EXPECT_THAT(sphere.centre, MatrixNear(centre, 1e-6));
 }
 
@@ -151,7 +151,7 @@ TEST(MinimalEnclosingSphereTest, ManyDegenerateSupportsOnCircleAndGrid) {
     circle.emplace_back(3.0 + 12.0 * std::cos(angle), -1.0, 12.0 * std::sin(angle));
   }
   const Sphere on_circle = MinimalEnclosingSphere(circle);
-  EXPECT_NEAR(on_circle.radius, 12.0, 1e-9);
+  EXPECT_NEAR(on_circle.radius_mm, 12.0, 1e-9);
   EXPECT_THAT(on_circle.centre, MatrixNear(Eigen::Vector3d(3, -1, 0), 1e-9));
 
   // A regular grid: 8 co-spherical corners and masses of coplanar, collinear points.
@@ -162,28 +162,28 @@ TEST(MinimalEnclosingSphereTest, ManyDegenerateSupportsOnCircleAndGrid) {
     }
   }
   const Sphere on_grid = MinimalEnclosingSphere(grid);
-  EXPECT_NEAR(on_grid.radius, 0.5 * std::sqrt(20.0 * 20.0 * 2 + 10.0 * 10.0), 1e-9);
+  EXPECT_NEAR(on_grid.radius_mm, 0.5 * std::sqrt(20.0 * 20.0 * 2 + 10.0 * 10.0), 1e-9);
   EXPECT_THAT(on_grid.centre, MatrixNear(Eigen::Vector3d(10, 10, 5), 1e-9));
 }
 
 TEST(MinimalEnclosingSphereTest, RegularTetrahedron) {
   const Points points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}, {0.2, 0.1, -0.3}};
   const Sphere sphere = MinimalEnclosingSphere(points);
-  EXPECT_NEAR(sphere.radius, std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(sphere.radius_mm, std::sqrt(3.0), 1e-12);
   EXPECT_THAT(sphere.centre, MatrixNear(Eigen::Vector3d::Zero(), 1e-12));
 }
 
 TEST(MinimalEnclosingSphereTest, TwoPointsAndOnePoint) {
   const Sphere two = MinimalEnclosingSphere({{0, 0, 0}, {6, 8, 0}});
-  EXPECT_NEAR(two.radius, 5.0, 1e-12);
+  EXPECT_NEAR(two.radius_mm, 5.0, 1e-12);
   EXPECT_THAT(two.centre, MatrixNear(Eigen::Vector3d(3, 4, 0), 1e-12));
 
   const Sphere one = MinimalEnclosingSphere({{1.5, -2, 3}});
-  EXPECT_EQ(one.radius, 0.0);
+  EXPECT_EQ(one.radius_mm, 0.0);
   EXPECT_THAT(one.centre, MatrixNear(Eigen::Vector3d(1.5, -2, 3), 0.0));
 
   const Sphere repeated = MinimalEnclosingSphere(Points(10, Eigen::Vector3d(4, 4, 4)));
-  EXPECT_EQ(repeated.radius, 0.0);
+  EXPECT_EQ(repeated.radius_mm, 0.0);
 }
 
 TEST(MinimalEnclosingSphereTest, FarFromOriginKeepsPrecision) {
@@ -191,7 +191,7 @@ TEST(MinimalEnclosingSphereTest, FarFromOriginKeepsPrecision) {
   Points points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
   for (auto& p : points) p += offset;
   const Sphere sphere = MinimalEnclosingSphere(points);
-  EXPECT_NEAR(sphere.radius, std::sqrt(3.0), 1e-8);
+  EXPECT_NEAR(sphere.radius_mm, std::sqrt(3.0), 1e-8);
   EXPECT_THAT(sphere.centre, MatrixNear(offset, 1e-8));
 }
 
@@ -209,17 +209,18 @@ TEST(MinimalEnclosingSphereTest, LargeCloudIsContainedAndTouchesBoundary) {
   ExpectContainsAll(sphere, points, 1e-6);
   int on_boundary = 0;
   for (const auto& p : points) {
-    if (std::abs((p - sphere.centre).norm() - sphere.radius) <= 1e-9 * sphere.radius) ++on_boundary;
+    if (std::abs((p - sphere.centre).norm() - sphere.radius_mm) <= 1e-9 * sphere.radius_mm)
+      ++on_boundary;
   }
   EXPECT_GE(on_boundary, 2);
-  EXPECT_LE(sphere.radius, 80.0);
-  EXPECT_GT(sphere.radius, 79.0);
+  EXPECT_LE(sphere.radius_mm, 80.0);
+  EXPECT_GT(sphere.radius_mm, 79.0);
 
   // Deterministic and independent of the input order.
   const Sphere again = MinimalEnclosingSphere(points);
-  EXPECT_EQ(again.radius, sphere.radius);
+  EXPECT_EQ(again.radius_mm, sphere.radius_mm);
   std::reverse(points.begin(), points.end());
-  EXPECT_NEAR(MinimalEnclosingSphere(points).radius, sphere.radius, 1e-9 * sphere.radius);
+  EXPECT_NEAR(MinimalEnclosingSphere(points).radius_mm, sphere.radius_mm, 1e-9 * sphere.radius_mm);
 }
 
 TEST(MinimalEnclosingSphereTest, RejectsEmptyAndNonFiniteInput) {

@@ -59,7 +59,7 @@ TEST_F(ModelTest, LoadsCubeInEveryTextFormatWithMergedVertices) {
     const Model model = LoadModel(Write(name, text));
     EXPECT_EQ(model.mesh.n_vertices(), 8u);
     EXPECT_EQ(model.mesh.n_faces(), 12u);
-    EXPECT_NEAR(model.sphere.radius, 20 * kHalfDiagonal, 1e-9);
+    EXPECT_NEAR(model.sphere.radius_mm, 20 * kHalfDiagonal, 1e-9);
     EXPECT_THAT(model.sphere.centre, MatrixNear(Eigen::Vector3d(10, 10, 10), 1e-9));
     EXPECT_THAT(model.bbox_min, MatrixNear(Eigen::Vector3d::Zero(), 1e-12));
     EXPECT_THAT(model.bbox_max, MatrixNear(Eigen::Vector3d(20, 20, 20), 1e-12));
@@ -127,7 +127,7 @@ TEST_F(ModelTest, ConvertsMetresToMillimetres) {
   const Model model = LoadModel(path, options);
   EXPECT_EQ(model.source_units, LengthUnit::kMetre);
   EXPECT_THAT(model.bbox_max, MatrixNear(Eigen::Vector3d(25, 25, 25), 1e-5));
-  EXPECT_NEAR(model.sphere.radius, 50 * kHalfDiagonal, 1e-5);
+  EXPECT_NEAR(model.sphere.radius_mm, 50 * kHalfDiagonal, 1e-5);
   EXPECT_TRUE(model.warnings.empty()) << model.warnings.front();
 
   // The same file read as mm is 0.09 mm across: say it looks like metres, in the log too.
@@ -162,7 +162,7 @@ TEST_F(ModelTest, WarnsAboutFarOriginAndRecentres) {
   EXPECT_FALSE(OriginFarFromCentre(model));
   EXPECT_TRUE(model.warnings.empty());
   EXPECT_THAT(model.sphere.centre, MatrixNear(Eigen::Vector3d::Zero(), 0.0));
-  EXPECT_NEAR(model.sphere.radius, 10 * kHalfDiagonal, 1e-9);
+  EXPECT_NEAR(model.sphere.radius_mm, 10 * kHalfDiagonal, 1e-9);
   EXPECT_THAT(model.bbox_min, MatrixNear(Eigen::Vector3d::Constant(-5), 1e-9));
   EXPECT_THAT(model.bbox_max, MatrixNear(Eigen::Vector3d::Constant(5), 1e-9));
   for (const auto vh : model.mesh.vertices()) {
@@ -184,7 +184,7 @@ TEST_F(ModelTest, DropsDegenerateFacesAndUnusedVertices) {
   const Model model = LoadModel(Write("dirty.ply", test::PlainPly(vertices, 12, faces, 14)));
   EXPECT_EQ(model.mesh.n_vertices(), 8u);
   EXPECT_EQ(model.mesh.n_faces(), 12u);
-  EXPECT_NEAR(model.sphere.radius, 10 * kHalfDiagonal, 1e-9);
+  EXPECT_NEAR(model.sphere.radius_mm, 10 * kHalfDiagonal, 1e-9);
 }
 
 TEST_F(ModelTest, KeepsNonManifoldAndFlippedTriangles) {
@@ -203,7 +203,7 @@ TEST_F(ModelTest, AcceptsAFlatPlate) {
       test::PlainPly("0 0 0\n40 0 0\n40 30 0\n0 30 0\n", 4, "3 0 1 2\n3 0 2 3\n", 2);
   const Model model = LoadModel(Write("plate.ply", square));
   EXPECT_EQ(model.mesh.n_faces(), 2u);
-  EXPECT_NEAR(model.sphere.radius, 25.0, 1e-9);
+  EXPECT_NEAR(model.sphere.radius_mm, 25.0, 1e-9);
 }
 
 TEST_F(ModelTest, HashIdentifiesFileContent) {
@@ -316,8 +316,8 @@ TEST(ModelSharedDataTest, LoadsLineModOccludedModel) {
   EXPECT_TRUE(model.has_vertex_colors);
   // BOP's diameter is the largest distance between two vertices; the enclosing sphere can only
   // be larger (this object: 1.7 % larger, measured against a brute-force vertex diameter).
-  EXPECT_GE(model.sphere.radius, 0.5 * diameter_mm * (1.0 - 1e-5));
-  EXPECT_LE(model.sphere.radius, 0.5 * diameter_mm * 1.03);
+  EXPECT_GE(model.sphere.radius_mm, 0.5 * diameter_mm * (1.0 - 1e-5));
+  EXPECT_LE(model.sphere.radius_mm, 0.5 * diameter_mm * 1.03);
   EXPECT_GT(model.mesh.n_faces(), 10000u);
   // Real colours, not the uniform grey of a colourless mesh.
   std::set<int> reds;

@@ -32,7 +32,7 @@ TEST(SaveModelPlyTest, RoundTripsThroughLoadModel) {
   EXPECT_TRUE(copy.has_vertex_colors);
   ASSERT_EQ(copy.mesh.n_vertices(), original.mesh.n_vertices());
   EXPECT_EQ(copy.mesh.n_faces(), original.mesh.n_faces());
-  EXPECT_NEAR(copy.sphere.radius, original.sphere.radius, 1e-6);
+  EXPECT_NEAR(copy.sphere.radius_mm, original.sphere.radius_mm, 1e-6);
   EXPECT_THAT(copy.sphere.centre, MatrixNear(original.sphere.centre, 1e-6));
   // Same vertex order: the writer keeps indices, the loader keeps the file's order.
   for (const auto vh : copy.mesh.vertices()) {

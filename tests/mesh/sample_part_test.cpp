@@ -117,8 +117,8 @@ TEST_F(SampleBracketTest, SizeColourAndOrigin) {
     ASSERT_EQ(mesh.color(vh), OpenMesh::Vec3uc(170, 170, 175));
   }
   const Sphere sphere = MinimalEnclosingSphere(points);
-  EXPECT_GT(2 * sphere.radius, 100.0);
-  EXPECT_LT(2 * sphere.radius, 140.0);
+  EXPECT_GT(2 * sphere.radius_mm, 100.0);
+  EXPECT_LT(2 * sphere.radius_mm, 140.0);
   EXPECT_LT(sphere.centre.norm(), 1.0);
 }
 
@@ -160,7 +160,7 @@ TEST_F(SampleBracketTest, BundledFileMatchesGenerator) {
   std::vector<Eigen::Vector3d> points;
   for (const auto vh : mesh.vertices()) points.push_back(ToEigen(mesh.point(vh)));
   const Sphere expected = MinimalEnclosingSphere(points);
-  EXPECT_NEAR(model.sphere.radius, expected.radius, 1e-3);
+  EXPECT_NEAR(model.sphere.radius_mm, expected.radius_mm, 1e-3);
   EXPECT_THAT(model.sphere.centre, test::MatrixNear(expected.centre, 1e-3));
 }
 

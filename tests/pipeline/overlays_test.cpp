@@ -104,7 +104,7 @@ TEST(OverlaysTest, PosesDrawTheContourAtTheDetectedPoseOnly) {
   const Eigen::Vector2d centre =
       frame.capture.camera.Project(best.cam_from_model * object.sphere.centre);
   const double radius_px =
-      frame.capture.camera.fx * object.sphere.radius / best.cam_from_model.t.z();
+      frame.capture.camera.fx * object.sphere.radius_mm / best.cam_from_model.t.z();
   const int reach = static_cast<int>(radius_px) + 4;
   const cv::Rect around(static_cast<int>(centre.x()) - reach, static_cast<int>(centre.y()) - reach,
                         2 * reach, 2 * reach);

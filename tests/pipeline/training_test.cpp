@@ -53,10 +53,10 @@ void ExpectSameTemplate(const TemplateRecord& a, const TemplateRecord& b) {
 TEST(TrainingTest, PlanMatchesLayersAndViews) {
   const TrainingPlan plan = PlanTraining(SampleModel(), TinyRequest());
   EXPECT_EQ(plan.views.size(), 4u * 3u * 3u);
-  EXPECT_NEAR(plan.radius_mm, SampleModel().sphere.radius, 1e-9);
+  EXPECT_NEAR(plan.radius_mm, SampleModel().sphere.radius_mm, 1e-9);
   // 300 mm range with step r: ceil(300 / r) layers.
   EXPECT_EQ(plan.layer_depths_mm.size(),
-            static_cast<std::size_t>(std::ceil(300.0 / SampleModel().sphere.radius)));
+            static_cast<std::size_t>(std::ceil(300.0 / SampleModel().sphere.radius_mm)));
 }
 
 TEST(TrainingTest, TrainsWritesAndReloadsIdentically) {
@@ -79,7 +79,7 @@ TEST(TrainingTest, TrainsWritesAndReloadsIdentically) {
   EXPECT_EQ(loaded.camera(), test::VgaCamera());
   const ArchiveObject& object = loaded.Object(3);
   EXPECT_EQ(object.name, "bracket");
-  EXPECT_NEAR(object.sphere.radius, SampleModel().sphere.radius, 1e-9);
+  EXPECT_NEAR(object.sphere.radius_mm, SampleModel().sphere.radius_mm, 1e-9);
   EXPECT_EQ(object.profile.views, TinyRequest().profile.views);
   EXPECT_EQ(loaded.TemplatesOf(3, 0).size(), 36u);
 }

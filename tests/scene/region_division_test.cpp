@@ -7,6 +7,7 @@
 #include <limits>
 #include <set>
 
+#include "scene/depth_mm.h"
 #include "util/error.h"
 
 namespace layermod {
@@ -88,23 +89,6 @@ TEST(RegionDivisionTest, AnyImageSizeWorks) {
   EXPECT_NE(BlockAt(division, {50, 35}), nullptr);
   EXPECT_NE(BlockAt(division, {100, 76}), nullptr);
   EXPECT_EQ(BlockAt(division, {101, 76}), nullptr);
-}
-
-TEST(RegionDivisionTest, DepthConversionHandlesTypesAndRejectsOthers) {
-  cv::Mat depth16(2, 2, CV_16U, cv::Scalar(800));
-  depth16.at<std::uint16_t>(0, 0) = 0;
-  const cv::Mat mm = DepthToMillimetres(depth16);
-  EXPECT_EQ(mm.type(), CV_32F);
-  EXPECT_EQ(mm.at<float>(0, 0), 0.0f);
-  EXPECT_EQ(mm.at<float>(1, 1), 800.0f);
-  cv::Mat metres(2, 2, CV_32F, cv::Scalar(0.8f));
-  metres.at<float>(0, 1) = -std::numeric_limits<float>::infinity();
-  const cv::Mat from_metres = DepthToMillimetres(metres, 1000.0);
-  EXPECT_NEAR(from_metres.at<float>(1, 1), 800.0f, 1e-3);
-  EXPECT_EQ(from_metres.at<float>(0, 1), 0.0f);
-  EXPECT_THROW(DepthToMillimetres(cv::Mat(2, 2, CV_8U, cv::Scalar(1))), Error);
-  EXPECT_THROW(DepthToMillimetres(cv::Mat(2, 2, CV_16UC3)), Error);
-  EXPECT_THROW(DepthToMillimetres(cv::Mat()), Error);
 }
 
 TEST(RegionDivisionTest, RejectsBadArguments) {

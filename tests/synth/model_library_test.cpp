@@ -63,10 +63,10 @@ TEST(ModelLibraryTest, LoadsMeshSphereAndComputedInfo) {
   const SynthModel& bracket = loaded.at(1);
   EXPECT_EQ(bracket.obj_id, 1);
   EXPECT_FALSE(bracket.mesh.triangles.empty());
-  EXPECT_GT(bracket.sphere.radius, 50.0);
+  EXPECT_GT(bracket.sphere.radius_mm, 50.0);
   // No models_info.json: computed. The diameter is at most the sphere's and at least the
   // bounding box's largest side.
-  EXPECT_LE(bracket.info.diameter_mm, 2.0 * bracket.sphere.radius + 1e-9);
+  EXPECT_LE(bracket.info.diameter_mm, 2.0 * bracket.sphere.radius_mm + 1e-9);
   EXPECT_GE(bracket.info.diameter_mm, bracket.info.size.maxCoeff());
   EXPECT_NEAR(bracket.info.size.x(), 100.0, 1e-3);
   EXPECT_FALSE(bracket.info.IsSymmetric());

@@ -50,8 +50,8 @@ ArchiveObject MakeObject(std::int32_t obj_id, int layers, int index) {
       "9f86d081884c7d659a2feaa0c55ad015a3bf4f1b2b0b822cd15d6c15b0f00a0" + std::to_string(index);
   object.units = index % 2 == 0 ? "mm" : "m";
   object.sphere.centre = Eigen::Vector3d(1.5, -2.25, 3.125 + index);
-  object.sphere.radius = 51.7 + index;
-  object.diameter_mm = 2.0 * object.sphere.radius;
+  object.sphere.radius_mm = 51.7 + index;
+  object.diameter_mm = 2.0 * object.sphere.radius_mm;
   object.bbox_min = Eigen::Vector3d(-40.0, -30.5, -20.25);
   object.bbox_size = Eigen::Vector3d(80.0, 61.0, 40.5);
   for (int layer = 0; layer < layers; ++layer)
@@ -232,7 +232,7 @@ void ExpectSameManifest(const ArchiveManifest& actual, const ArchiveManifest& ex
     EXPECT_EQ(a.mesh_hash, e.mesh_hash);
     EXPECT_EQ(a.units, e.units);
     EXPECT_TRUE(a.sphere.centre == e.sphere.centre);
-    EXPECT_EQ(a.sphere.radius, e.sphere.radius);
+    EXPECT_EQ(a.sphere.radius_mm, e.sphere.radius_mm);
     EXPECT_EQ(a.diameter_mm, e.diameter_mm);
     EXPECT_TRUE(a.bbox_min == e.bbox_min);
     EXPECT_TRUE(a.bbox_size == e.bbox_size);

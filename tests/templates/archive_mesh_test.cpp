@@ -46,7 +46,7 @@ TEST(ArchiveMeshTest, OtherBytesOrAnotherSphereDoNotMatch) {
   other_file.mesh_hash = "00";
   EXPECT_FALSE(ModelMatchesObject(model, other_file));
   ArchiveObject metres = ObjectTrainedFrom(model);
-  metres.sphere.radius *= 1000.0;
+  metres.sphere.radius_mm *= 1000.0;
   EXPECT_FALSE(ModelMatchesObject(model, metres));
   ArchiveObject recentred = ObjectTrainedFrom(model);
   recentred.sphere.centre.setZero();

@@ -16,14 +16,14 @@
 #include <QWheelEvent>
 #include <nlohmann/json.hpp>
 
-#include "ui/dock_layout.h"
-#include "ui/job_runner.h"
-#include "ui/log_dock.h"
-#include "ui/main_window.h"
-#include "ui/studio_dialogs.h"
-#include "ui/studio_session.h"
-#include "ui/training_panel.h"
-#include "ui/views_panel.h"
+#include "ui/common/job_runner.h"
+#include "ui/common/studio_dialogs.h"
+#include "ui/common/studio_session.h"
+#include "ui/training/training_panel.h"
+#include "ui/views/views_panel.h"
+#include "ui/window/dock_layout.h"
+#include "ui/window/log_dock.h"
+#include "ui/window/main_window.h"
 #include "ui_test_support.h"
 #include "util/log.h"
 

@@ -5,9 +5,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "ui/job_runner.h"
-#include "ui/model_panel.h"
-#include "ui/studio_session.h"
+#include "ui/common/job_runner.h"
+#include "ui/common/studio_session.h"
+#include "ui/model/model_panel.h"
 #include "ui_test_support.h"
 
 namespace layermod::ui::test {
@@ -34,8 +34,9 @@ class ModelPanelTest : public QObject {
     QVERIFY(panel_->OpenMesh(SampleMeshPath()));
     QTRY_VERIFY_WITH_TIMEOUT(session_->model() != nullptr, 20000);
     QCOMPARE(opened.count(), 1);
-    QCOMPARE(session_->model()->sphere.radius, expected.sphere.radius);
-    QCOMPARE(Label("radiusValue"), QStringLiteral("%1 mm").arg(expected.sphere.radius, 0, 'f', 2));
+    QCOMPARE(session_->model()->sphere.radius_mm, expected.sphere.radius_mm);
+    QCOMPARE(Label("radiusValue"),
+             QStringLiteral("%1 mm").arg(expected.sphere.radius_mm, 0, 'f', 2));
     QCOMPARE(Label("diameterValue"), QStringLiteral("%1 mm").arg(expected.DiameterMm(), 0, 'f', 2));
     QVERIFY(Label("countsValue").contains(QString::number(expected.mesh.n_faces())));
     QVERIFY(!panel_->findChild<QPushButton*>("recentreButton")->isVisible());
@@ -44,12 +45,13 @@ class ModelPanelTest : public QObject {
   void ChangingUnitsReloadsTheMesh() {
     QVERIFY(panel_->OpenMesh(SampleMeshPath()));
     QTRY_VERIFY_WITH_TIMEOUT(session_->model() != nullptr, 20000);
-    const double radius_mm = session_->model()->sphere.radius;
+    const double radius_mm = session_->model()->sphere.radius_mm;
     auto* units = panel_->findChild<QComboBox*>("unitsCombo");
     units->setCurrentIndex(units->findData(static_cast<int>(LengthUnit::kMetre)));
     emit units->activated(units->currentIndex());
     QTRY_VERIFY_WITH_TIMEOUT(session_->model()->source_units == LengthUnit::kMetre, 20000);
-    QVERIFY(qAbs(session_->model()->sphere.radius - 1000.0 * radius_mm) < 1e-6 * radius_mm * 1000);
+    QVERIFY(qAbs(session_->model()->sphere.radius_mm - 1000.0 * radius_mm) <
+            1e-6 * radius_mm * 1000);
     QVERIFY(Label("warningsValue").contains("millimetres"));
   }
 

@@ -11,12 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/training.h"
-#include "ui/main_window.h"
-#include "ui/scene_view.h"
-#include "ui/studio_session.h"
-#include "ui/template_browser.h"
-#include "ui/template_list_model.h"
-#include "ui/views_panel.h"
+#include "ui/common/studio_session.h"
+#include "ui/scene3d/scene_view.h"
+#include "ui/templates/template_browser.h"
+#include "ui/templates/template_list_model.h"
+#include "ui/views/views_panel.h"
+#include "ui/window/main_window.h"
 #include "ui_test_support.h"
 
 namespace layermod::ui::test {

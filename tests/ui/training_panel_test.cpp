@@ -9,14 +9,14 @@
 #include <QSpinBox>
 #include <QTest>
 
-#include "ui/job_runner.h"
-#include "ui/main_window.h"
-#include "ui/model_panel.h"
-#include "ui/studio_session.h"
-#include "ui/template_browser.h"
-#include "ui/template_list_model.h"
-#include "ui/training_panel.h"
-#include "ui/views_panel.h"
+#include "ui/common/job_runner.h"
+#include "ui/common/studio_session.h"
+#include "ui/model/model_panel.h"
+#include "ui/templates/template_browser.h"
+#include "ui/templates/template_list_model.h"
+#include "ui/training/training_panel.h"
+#include "ui/views/views_panel.h"
+#include "ui/window/main_window.h"
 #include "ui_test_support.h"
 
 namespace layermod::ui::test {

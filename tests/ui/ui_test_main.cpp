@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <opencv2/core.hpp>
 
-#include "ui/studio_dialogs.h"
+#include "ui/common/studio_dialogs.h"
 #include "ui_test_support.h"
 #include "util/log.h"
 

@@ -63,7 +63,7 @@ BopFrame RenderFrameAt(const Model& model, const TemplateRecord& record,
   frame.camera = camera;
   frame.color = cv::Mat(view.mask.size(), CV_8UC3, cv::Scalar(90, 95, 100));
   view.color.copyTo(frame.color, view.mask);
-  const double wall_mm = record.layer_depth_mm + model.sphere.radius;
+  const double wall_mm = record.layer_depth_mm + model.sphere.radius_mm;
   frame.depth_mm = cv::Mat(view.mask.size(), CV_32F, cv::Scalar(wall_mm));
   view.depth_mm.copyTo(frame.depth_mm, view.mask);
   frame.gt.push_back({record.obj_id, record.cam_from_model});

@@ -14,9 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/up_axis.h"
-#include "ui/object_form.h"
-#include "ui/studio_session.h"
-#include "ui/views_panel.h"
+#include "ui/common/studio_session.h"
+#include "ui/views/object_form.h"
+#include "ui/views/views_panel.h"
 #include "ui_test_support.h"
 
 namespace layermod::ui::test {

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+#include "ui/detection/detection_table.h"
+
+#include <QHeaderView>
+#include <QObject>
+#include <QTableWidget>
+
+#include "geometry/pose.h"
+
+namespace layermod::ui {
+namespace {
+
+QString Number(double value, int decimals = 1) { return QString::number(value, 'f', decimals); }
+
+// Axis-angle reads better than a matrix in one cell: "37.2° about (0.12, -0.98, 0.16)".
+QString RotationText(const Eigen::Matrix3d& rotation) {
+  const Eigen::AngleAxisd axis_angle(rotation);
+  const Eigen::Vector3d& axis = axis_angle.axis();
+  return QObject::tr("%1° about (%2, %3, %4)")
+      .arg(Number(RadToDeg(axis_angle.angle())), Number(axis.x(), 2), Number(axis.y(), 2),
+           Number(axis.z(), 2));
+}
+
+}  // namespace
+
+QStringList DetectionColumnTitles() {
+  return {QObject::tr("Object"), QObject::tr("Confidence"),    QObject::tr("Score"),
+          QObject::tr("Layer"),  QObject::tr("Position (mm)"), QObject::tr("Rotation"),
+          QObject::tr("ICP")};
+}
+
+QStringList DetectionRowTexts(const Detection& detection) {
+  const Eigen::Vector3d& t = detection.cam_from_model.t;
+  const QString object =
+      QStringLiteral("%1 (%2)").arg(QString::fromStdString(detection.name)).arg(detection.obj_id);
+  const QString icp = detection.icp.iterations > 0
+                          ? QObject::tr("%1 mm rms").arg(Number(detection.icp.rmse_mm, 2))
+                          : QObject::tr("not refined");
+  return {
+      object,
+      Number(detection.confidence, 2),
+      QStringLiteral("%1 %").arg(Number(detection.score)),
+      QObject::tr("%1: %2 mm").arg(detection.layer_index).arg(Number(detection.layer_depth_mm, 0)),
+      QStringLiteral("(%1, %2, %3)").arg(Number(t.x()), Number(t.y()), Number(t.z())),
+      RotationText(detection.cam_from_model.R),
+      icp};
+}
+
+void FillDetectionTable(QTableWidget* table, const std::vector<Detection>& detections) {
+  table->clearContents();
+  table->setColumnCount(static_cast<int>(DetectionColumnTitles().size()));
+  table->setHorizontalHeaderLabels(DetectionColumnTitles());
+  table->setRowCount(static_cast<int>(detections.size()));
+  for (int row = 0; row < table->rowCount(); ++row) {
+    const QStringList texts = DetectionRowTexts(detections[static_cast<std::size_t>(row)]);
+    for (int column = 0; column < texts.size(); ++column) {
+      table->setItem(row, column, new QTableWidgetItem(texts[column]));
+    }
+  }
+  table->resizeColumnsToContents();
+  table->horizontalHeader()->setStretchLastSection(true);
+}
+
+QString FormatStageTimings(const StageTimings& timings) {
+  return QObject::tr("prepare %1 · regions %2 · coarse %3 · match %4 · pose %5 · total %6 ms")
+      .arg(Number(timings.prepare_ms), Number(timings.regions_ms), Number(timings.coarse_ms),
+           Number(timings.match_ms), Number(timings.pose_ms), Number(timings.total_ms));
+}
+
+}  // namespace layermod::ui
