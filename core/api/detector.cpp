@@ -36,6 +36,7 @@ DetectorOptions ParseOptions(std::string_view options_json) {
 std::vector<std::shared_ptr<const TemplateArchive>> CoreArchives(
     const std::vector<Archive>& archives) {
   std::vector<std::shared_ptr<const TemplateArchive>> core;
+  core.reserve(archives.size());
   for (const Archive& archive : archives) core.push_back(ArchiveAccess::Core(archive));
   return core;
 }

@@ -11,7 +11,8 @@
 namespace layermod {
 namespace {
 
-void DrawLabel(cv::Mat& canvas, const std::string& text, cv::Point origin, cv::Scalar color) {
+void DrawLabel(cv::Mat& canvas, const std::string& text, cv::Point origin,
+               const cv::Scalar& color) {
   cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3,
               cv::LINE_AA);
   cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.45, color, 1, cv::LINE_AA);
@@ -121,8 +122,9 @@ void DrawMatches(cv::Mat& canvas, const ObjectDiagnostics& diagnostics,
     for (const Feature& feature : tmpl.levels.at(0).features) {
       const cv::Scalar dot = feature.modality == Modality::kColorGradient ? cv::Scalar(0, 255, 0)
                                                                           : cv::Scalar(255, 80, 80);
-      if (drawn == 0)
+      if (drawn == 0) {
         cv::circle(canvas, box.tl() + cv::Point(feature.x, feature.y), 1, dot, cv::FILLED);
+      }
     }
     char text[48];
     std::snprintf(text, sizeof(text), "#%u %.1f%%", match.template_id, match.similarity_percent);

@@ -110,7 +110,7 @@ cv::Mat CellMedianDepth(const cv::Mat& depth_mm, int cell) {
   const int stride = cell >= 4 ? 2 : 1;
   tbb::parallel_for(0, cells.height, [&](int cy) {
     std::vector<float> values;
-    values.reserve(static_cast<std::size_t>(cell * cell));
+    values.reserve(static_cast<std::size_t>(cell) * static_cast<std::size_t>(cell));
     for (int cx = 0; cx < cells.width; ++cx) {
       values.clear();
       const int y_end = std::min(depth_mm.rows, (cy + 1) * cell);
@@ -181,8 +181,9 @@ RegionDivision DivideScene(const cv::Mat& cell_depth_mm, const cv::Size& image_s
       for (int cell : region) sum += cell_depth.ptr<float>()[cell];
       const double mean = sum / static_cast<double>(region.size());
       const int layer = NearestLayer(mean, layer_depths_mm);
-      if (std::abs(layer_depths_mm[static_cast<std::size_t>(layer)] - mean) > max_distance)
+      if (std::abs(layer_depths_mm[static_cast<std::size_t>(layer)] - mean) > max_distance) {
         continue;
+      }
       std::uint8_t* cells = layer_cells[static_cast<std::size_t>(layer)].ptr<std::uint8_t>();
       for (int cell : region) cells[cell] = 255;
     }

@@ -78,7 +78,7 @@ bool ConfirmExportStale(QWidget* parent) {
 
 QString AskOpenPath(QWidget* parent, const QString& kind, const QString& title,
                     const QString& filter) {
-  const QString path = QFileDialog::getOpenFileName(parent, title, LastDir(kind), filter);
+  QString path = QFileDialog::getOpenFileName(parent, title, LastDir(kind), filter);
   RememberDir(kind, path);
   return path;
 }
@@ -86,7 +86,7 @@ QString AskOpenPath(QWidget* parent, const QString& kind, const QString& title,
 QString AskSavePath(QWidget* parent, const QString& kind, const QString& title,
                     const QString& filter, const QString& suggested_name) {
   const QString start = QDir(LastDir(kind)).filePath(suggested_name);
-  const QString path = QFileDialog::getSaveFileName(parent, title, start, filter);
+  QString path = QFileDialog::getSaveFileName(parent, title, start, filter);
   RememberDir(kind, path);
   return path;
 }

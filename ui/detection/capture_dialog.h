@@ -30,11 +30,11 @@ class CaptureDialog : public QDialog {
                     const QString& kind, const QString& filter);
   void Validate();
 
-  QLineEdit* color_;
-  QLineEdit* depth_;
-  QLineEdit* camera_;
-  QLabel* problem_;
-  QDialogButtonBox* buttons_;
+  QLineEdit* color_ = nullptr;
+  QLineEdit* depth_ = nullptr;
+  QLineEdit* camera_ = nullptr;
+  QLabel* problem_ = nullptr;
+  QDialogButtonBox* buttons_ = nullptr;
 };
 
 }  // namespace layermod::ui

@@ -106,8 +106,8 @@ class DetectionPanel : public QWidget {
   void UpdateState();
   QString ArchiveText() const;
 
-  StudioSession* session_;
-  JobRunner* runner_;
+  StudioSession* session_ = nullptr;
+  JobRunner* runner_ = nullptr;
   std::vector<std::function<bool()>> pending_;
   CaptureSource source_;
   std::vector<int> frame_ids_;                                // of the loaded BOP scene
@@ -124,20 +124,20 @@ class DetectionPanel : public QWidget {
   std::shared_ptr<const Detector> result_detector_;
   std::shared_ptr<const DetectionResult> result_;
 
-  QLineEdit* bop_dir_;
-  QSpinBox* scene_;
-  QSpinBox* frame_;
-  QLabel* capture_label_;
-  QLabel* archive_label_;
-  QLabel* coverage_label_;
-  DetectionOptionsForm* options_;
-  QCheckBox* detect_on_load_;
-  QPushButton* detect_;
+  QLineEdit* bop_dir_ = nullptr;
+  QSpinBox* scene_ = nullptr;
+  QSpinBox* frame_ = nullptr;
+  QLabel* capture_label_ = nullptr;
+  QLabel* archive_label_ = nullptr;
+  QLabel* coverage_label_ = nullptr;
+  DetectionOptionsForm* options_ = nullptr;
+  QCheckBox* detect_on_load_ = nullptr;
+  QPushButton* detect_ = nullptr;
   QCheckBox* toggles_[4] = {};
-  QLabel* legend_;
-  ImageView* image_;
-  QTableWidget* table_;
-  QLabel* timings_;
+  QLabel* legend_ = nullptr;
+  ImageView* image_ = nullptr;
+  QTableWidget* table_ = nullptr;
+  QLabel* timings_ = nullptr;
 };
 
 }  // namespace layermod::ui

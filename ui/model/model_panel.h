@@ -37,18 +37,18 @@ class ModelPanel : public QWidget {
   void OnUnitsChanged();
   void ShowModel();
 
-  StudioSession* session_;
-  JobRunner* runner_;
-  QLabel* file_;
-  QComboBox* units_;
-  QLabel* radius_;
-  QLabel* diameter_;
-  QLabel* centre_;
-  QLabel* counts_;
-  QLabel* bbox_;
-  QLabel* colours_;
-  QLabel* warnings_;
-  QPushButton* recentre_;
+  StudioSession* session_ = nullptr;
+  JobRunner* runner_ = nullptr;
+  QLabel* file_ = nullptr;
+  QComboBox* units_ = nullptr;
+  QLabel* radius_ = nullptr;
+  QLabel* diameter_ = nullptr;
+  QLabel* centre_ = nullptr;
+  QLabel* counts_ = nullptr;
+  QLabel* bbox_ = nullptr;
+  QLabel* colours_ = nullptr;
+  QLabel* warnings_ = nullptr;
+  QPushButton* recentre_ = nullptr;
 };
 
 }  // namespace layermod::ui

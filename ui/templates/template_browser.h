@@ -41,21 +41,21 @@ class TemplateBrowser : public QWidget {
   void ShowDetail(int row);   // -1: none
   void ShowCurrent(int row);  // detail and TemplateSelected
 
-  StudioSession* session_;
-  TemplateListModel* model_;
-  QListView* list_;
-  QComboBox* layer_;
-  QDoubleSpinBox* elevation_min_;
-  QDoubleSpinBox* elevation_max_;
-  QDoubleSpinBox* azimuth_min_;
-  QDoubleSpinBox* azimuth_max_;
-  QDoubleSpinBox* roll_min_;
-  QDoubleSpinBox* roll_max_;
-  QLabel* count_;
-  QWidget* mesh_banner_;
-  QLabel* mesh_banner_text_;
-  QLabel* detail_image_;
-  QLabel* detail_text_;
+  StudioSession* session_ = nullptr;
+  TemplateListModel* model_ = nullptr;
+  QListView* list_ = nullptr;
+  QComboBox* layer_ = nullptr;
+  QDoubleSpinBox* elevation_min_ = nullptr;
+  QDoubleSpinBox* elevation_max_ = nullptr;
+  QDoubleSpinBox* azimuth_min_ = nullptr;
+  QDoubleSpinBox* azimuth_max_ = nullptr;
+  QDoubleSpinBox* roll_min_ = nullptr;
+  QDoubleSpinBox* roll_max_ = nullptr;
+  QLabel* count_ = nullptr;
+  QWidget* mesh_banner_ = nullptr;
+  QLabel* mesh_banner_text_ = nullptr;
+  QLabel* detail_image_ = nullptr;
+  QLabel* detail_text_ = nullptr;
 };
 
 }  // namespace layermod::ui

@@ -57,20 +57,20 @@ class TrainingPanel : public QWidget {
   void ResetProgress();
   void UpdateButtons();
 
-  StudioSession* session_;
-  JobRunner* runner_;
+  StudioSession* session_ = nullptr;
+  JobRunner* runner_ = nullptr;
   RequestSource request_;
   bool training_ = false;
   // What the session's template set was trained (or opened) with; empty without a set.
   std::optional<TrainingRequest> basis_;
   QString form_problem_;
-  QPushButton* train_;
-  QPushButton* cancel_;
-  QPushButton* export_;
-  QProgressBar* progress_;
-  QLabel* eta_;
-  QLabel* summary_;
-  QLabel* stale_;
+  QPushButton* train_ = nullptr;
+  QPushButton* cancel_ = nullptr;
+  QPushButton* export_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* eta_ = nullptr;
+  QLabel* summary_ = nullptr;
+  QLabel* stale_ = nullptr;
   const QString train_tip_;
 };
 

@@ -26,12 +26,12 @@ class CameraForm : public QWidget {
   void Changed();
 
  private:
-  QDoubleSpinBox* fx_;
-  QDoubleSpinBox* fy_;
-  QDoubleSpinBox* cx_;
-  QDoubleSpinBox* cy_;
-  QSpinBox* width_;
-  QSpinBox* height_;
+  QDoubleSpinBox* fx_ = nullptr;
+  QDoubleSpinBox* fy_ = nullptr;
+  QDoubleSpinBox* cx_ = nullptr;
+  QDoubleSpinBox* cy_ = nullptr;
+  QSpinBox* width_ = nullptr;
+  QSpinBox* height_ = nullptr;
 };
 
 }  // namespace layermod::ui

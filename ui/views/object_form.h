@@ -33,8 +33,8 @@ class ObjectForm : public QWidget {
   void Changed();
 
  private:
-  QSpinBox* id_;
-  QLineEdit* name_;
+  QSpinBox* id_ = nullptr;
+  QLineEdit* name_ = nullptr;
   QString defaulted_from_;
 };
 

@@ -277,8 +277,9 @@ QWidget* ViewsPanel::BuildViewsBox() {
   const QString rows[] = {tr("Azimuth"), tr("Elevation"), tr("Roll")};
   const QString columns[] = {tr("min"), tr("step"), tr("max")};
   const char* names[] = {"azimuth", "elevation", "roll"};
-  for (int column = 0; column < 3; ++column)
+  for (int column = 0; column < 3; ++column) {
     grid->addWidget(new QLabel(columns[column]), 0, column + 1);
+  }
   for (int row = 0; row < 3; ++row) {
     grid->addWidget(new QLabel(rows[row]), row + 1, 0);
     for (int column = 0; column < 3; ++column) {

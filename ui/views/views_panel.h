@@ -76,23 +76,23 @@ class ViewsPanel : public QWidget {
   void ShowUnusedGridBoxes();
   QString FormProblem() const;
 
-  StudioSession* session_;
+  StudioSession* session_ = nullptr;
   TrainingProfile base_;  // fields the form does not show are kept from here
-  QDoubleSpinBox* depth_min_;
-  QDoubleSpinBox* depth_max_;
-  QComboBox* up_axis_;
-  QLabel* resting_;
-  RestingPoses resting_all_;      // of the session's model; the likely ones are offered as links
-  QDoubleSpinBox* angles_[3][3];  // [azimuth, elevation, roll][min, step, max]
-  QDoubleSpinBox* even_spacing_;
-  QSpinBox* color_features_;
-  QSpinBox* normal_features_;
-  CameraForm* camera_;
-  ObjectForm* object_;
-  QWidget* lock_note_;
+  QDoubleSpinBox* depth_min_ = nullptr;
+  QDoubleSpinBox* depth_max_ = nullptr;
+  QComboBox* up_axis_ = nullptr;
+  QLabel* resting_ = nullptr;
+  RestingPoses resting_all_;  // of the session's model; the likely ones are offered as links
+  QDoubleSpinBox* angles_[3][3] = {};  // [azimuth, elevation, roll][min, step, max]
+  QDoubleSpinBox* even_spacing_ = nullptr;
+  QSpinBox* color_features_ = nullptr;
+  QSpinBox* normal_features_ = nullptr;
+  CameraForm* camera_ = nullptr;
+  ObjectForm* object_ = nullptr;
+  QWidget* lock_note_ = nullptr;
   bool locked_ = false;
-  QLabel* plan_label_;
-  QTimer* debounce_;
+  QLabel* plan_label_ = nullptr;
+  QTimer* debounce_ = nullptr;
   std::optional<TrainingPlan> plan_;
   QString problem_;
 };

@@ -40,16 +40,16 @@ class DockLayout : public QObject {
 
  private:
   struct Entry {
-    QDockWidget* dock;
-    Qt::DockWidgetArea area;
-    double fraction;
-    int max_px;
+    QDockWidget* dock = nullptr;
+    Qt::DockWidgetArea area = Qt::LeftDockWidgetArea;
+    double fraction = 0.0;
+    int max_px = 0;
     QDockWidget* tab_of = nullptr;
   };
   const Entry* Find(const QDockWidget* dock) const;
   void ResizeAll(bool only_collapsed);
 
-  QMainWindow* window_;
+  QMainWindow* window_ = nullptr;
   std::vector<Entry> entries_;
   QList<QPointer<QDockWidget>> hidden_for_preview_;
 };

@@ -24,7 +24,7 @@ class LogDock : public QDockWidget {
   void Append(int level, const QString& message);
 
  private:
-  QPlainTextEdit* text_;
+  QPlainTextEdit* text_ = nullptr;
   LogSink previous_sink_;
 };
 

@@ -66,16 +66,16 @@ class MainWindow : public QMainWindow {
   void SaveWindowSettings();
   void ShowSelectedCamera(int template_index);
 
-  StudioSession* session_;
-  JobRunner* runner_;
-  SceneView* scene_;
-  LogDock* log_dock_;
-  ModelPanel* model_panel_;
-  ViewsPanel* views_panel_;
-  TrainingPanel* training_panel_;
-  TemplateBrowser* browser_;
-  DetectionPanel* detection_panel_;
-  QTabWidget* tabs_;
+  StudioSession* session_ = nullptr;
+  JobRunner* runner_ = nullptr;
+  SceneView* scene_ = nullptr;
+  LogDock* log_dock_ = nullptr;
+  ModelPanel* model_panel_ = nullptr;
+  ViewsPanel* views_panel_ = nullptr;
+  TrainingPanel* training_panel_ = nullptr;
+  TemplateBrowser* browser_ = nullptr;
+  DetectionPanel* detection_panel_ = nullptr;
+  QTabWidget* tabs_ = nullptr;
   StudioFiles* files_ = nullptr;
   DockLayout* docks_ = nullptr;
 };

@@ -25,7 +25,7 @@ class RecentFiles : public QObject {
  private:
   void Rebuild();
 
-  QMenu* menu_;
+  QMenu* menu_ = nullptr;
   QStringList files_;
 };
 

@@ -20,7 +20,7 @@ constexpr int kIdlePollsNeeded = 5;
 }  // namespace
 
 void SaveScreenshotWhenIdle(MainWindow* window, const QString& path,
-                            std::function<void(bool ok)> done, int timeout_ms) {
+                            const std::function<void(bool ok)>& done, int timeout_ms) {
   auto* timer = new QTimer(window);
   auto clock = std::make_shared<QElapsedTimer>();
   auto idle_polls = std::make_shared<int>(0);

@@ -12,6 +12,6 @@ class MainWindow;
 // renders the 3D view, grabs the whole window to `path` (PNG) and calls `done(true)`; calls
 // `done(false)` when the grab cannot be written or the window never settles within `timeout_ms`.
 void SaveScreenshotWhenIdle(MainWindow* window, const QString& path,
-                            std::function<void(bool ok)> done, int timeout_ms = 180000);
+                            const std::function<void(bool ok)>& done, int timeout_ms = 180000);
 
 }  // namespace layermod::ui

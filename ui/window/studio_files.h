@@ -48,11 +48,11 @@ class StudioFiles : public QObject {
   void DropArchiveOfOtherMesh();
   void OpenNextQueued();
 
-  QWidget* window_;
-  StudioSession* session_;
-  JobRunner* runner_;
+  QWidget* window_ = nullptr;
+  StudioSession* session_ = nullptr;
+  JobRunner* runner_ = nullptr;
   Panels panels_;
-  RecentFiles* recent_;
+  RecentFiles* recent_ = nullptr;
   QStringList queue_;
 };
 
