@@ -3,6 +3,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
 #include <QSurfaceFormat>
 #include <cstdio>
 
@@ -20,8 +21,10 @@ namespace {
 
 struct CaptureOptions {
   QCommandLineOption bop{"bop", "Detection preview: BOP split folder of the capture.", "dir"};
-  QCommandLineOption scene{"scene", "BOP scene id (with --bop).", "id", "1"};
-  QCommandLineOption frame{"frame", "BOP image id (with --bop).", "id", "0"};
+  QCommandLineOption scene{"scene", "BOP scene id (with --bop or a BOP folder among the files).",
+                           "id", "1"};
+  QCommandLineOption frame{"frame", "BOP image id (with --bop or a BOP folder among the files).",
+                           "id", "0"};
   QCommandLineOption color{"color", "Detection preview: colour image of the capture.", "png"};
   QCommandLineOption depth{"depth", "16-bit depth PNG in mm (with --color).", "png"};
   QCommandLineOption camera{"camera", "BOP camera.json (with --color).", "json"};
@@ -38,11 +41,24 @@ struct CaptureOptions {
   }
 };
 
+// A BOP folder given among the files, when --scene or --frame says which frame of it to open
+// (without them the folder opens at its first frame, as a dropped folder does).
+QString BopFolderAmongFiles(const QCommandLineParser& parser, const CaptureOptions& options) {
+  if (parser.isSet(options.bop) || !(parser.isSet(options.scene) || parser.isSet(options.frame))) {
+    return {};
+  }
+  for (const QString& path : parser.positionalArguments()) {
+    if (QFileInfo(path).isDir()) return path;
+  }
+  return {};
+}
+
 // The capture asked for on the command line, if any.
 bool CaptureFromArguments(const QCommandLineParser& parser, const CaptureOptions& options,
                           layermod::ui::CaptureSource* source) {
-  if (parser.isSet(options.bop)) {
-    *source = {parser.value(options.bop),
+  const QString folder_among_files = BopFolderAmongFiles(parser, options);
+  if (parser.isSet(options.bop) || !folder_among_files.isEmpty()) {
+    *source = {parser.isSet(options.bop) ? parser.value(options.bop) : folder_among_files,
                parser.value(options.scene).toInt(),
                parser.value(options.frame).toInt(),
                {},
@@ -96,7 +112,9 @@ int main(int argc, char** argv) {
   layermod::ui::SetBatchMode(batch);
   layermod::ui::MainWindow window;
   window.show();
-  window.OpenFiles(parser.positionalArguments());
+  QStringList files = parser.positionalArguments();
+  files.removeAll(BopFolderAmongFiles(parser, capture_options));  // opened as the capture below
+  window.OpenFiles(files);
   if (parser.isSet(capture_options.overlays)) {
     window.detection_panel()->SetOverlays(
         OverlaysFromArgument(parser.value(capture_options.overlays)));

@@ -48,6 +48,17 @@ class StudioAppTest : public QObject {
     QVERIFY(image.width() >= 640 && image.height() >= 480);
   }
 
+  void FrameFlagsChooseTheFrameOfAFolderAmongTheFiles() {
+    // The folder given among the files opens at --scene/--frame, as with --bop: frame 7 is not
+    // in the capture, so the run names it and fails instead of showing frame 0.
+    const SyntheticCapture& files = SyntheticCaptureFiles();
+    const QString png = QDir(ScratchDir()).filePath("studio_positional_frame.png");
+    const Run run =
+        Studio({files.archive, files.bop_dir, "--scene", "1", "--frame", "7", "--screenshot", png});
+    QCOMPARE(run.exit_code, 1);
+    QVERIFY2(run.output.contains("image 7 is not in scene 1"), qPrintable(run.output));
+  }
+
   void MissingCaptureFolderFailsTheScreenshotRun() {
     const QString missing = QDir(ScratchDir()).filePath("no_such_dataset");
     const QString png = QDir(ScratchDir()).filePath("studio_no_capture.png");

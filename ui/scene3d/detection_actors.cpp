@@ -10,19 +10,13 @@
 #include <vtkProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include "ui/scene3d/scene_actors.h"
+
 namespace layermod::ui {
 namespace {
 
 // Every second pixel in each direction: a quarter of the points, the same look.
 constexpr int kPixelStep = 2;
-
-vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* data) {
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputData(data);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
-}
 
 }  // namespace
 

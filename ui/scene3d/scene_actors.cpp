@@ -50,14 +50,6 @@ Eigen::Vector3d ToCamera(const ViewAngles& view) {
   return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
 }
 
-vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* data) {
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputData(data);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
-}
-
 // Camera directions without the in-plane rolls (views are listed direction by direction).
 std::vector<ViewAngles> DistinctDirections(const std::vector<ViewAngles>& views) {
   std::set<std::pair<long long, long long>> seen;
@@ -100,6 +92,14 @@ vtkSmartPointer<vtkPolyData> CoveragePoints(const Sphere& sphere,
 }
 
 }  // namespace
+
+vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* data) {
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
 
 vtkSmartPointer<vtkPolyData> MeshPolyData(const Model& model) {
   const TriMesh& mesh = model.mesh;

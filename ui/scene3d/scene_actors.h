@@ -20,6 +20,9 @@ namespace layermod::ui {
 // Builders for the 3D view's actors (VTK pipelines only; no widget state). Everything is in model
 // millimetres.
 
+// An actor drawing `data` through a plain poly-data mapper.
+vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* data);
+
 // The mesh with its vertex colours when present (grey otherwise). No vertex normals: the view
 // shades per face, as CAD parts have sharp edges.
 vtkSmartPointer<vtkPolyData> MeshPolyData(const Model& model);
