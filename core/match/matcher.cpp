@@ -49,6 +49,14 @@ struct CandidateArea {
     int span = 0;
     cv::Point origin;
     cv::Mat reach;  // CV_8U
+    // The reach map sampled every `span` pixels, once for each of the span x span phases a
+    // template's grid can have against it (index ry * span + rx): cell j of phase (rx, ry) is
+    // reach(j.y * span - ry, j.x * span - rx), 0 outside. A template's near cells are then a
+    // shifted copy of one phase, with no pass over the map per template.
+    struct Phase {
+      std::vector<GridRowSpan> runs;  // the non-zero cells as maximal row runs, in scan order
+    };
+    std::vector<Phase> phases;
   };
   std::vector<Reach> by_span;
 
@@ -123,6 +131,25 @@ cv::Mat StampDisks(const std::vector<cv::Point>& points, int radius_px, const cv
   return disks;
 }
 
+CandidateArea::Reach::Phase SamplePhase(const cv::Mat& reach, int span, int rx, int ry) {
+  CandidateArea::Reach::Phase phase;
+  const int cols = (reach.cols - 1 + rx) / span + 1;
+  const int rows = (reach.rows - 1 + ry) / span + 1;
+  for (int jy = ry > 0 ? 1 : 0; jy < rows; ++jy) {
+    const std::uint8_t* reach_row = reach.ptr<std::uint8_t>(jy * span - ry);
+    for (int jx = rx > 0 ? 1 : 0; jx < cols; ++jx) {
+      if (reach_row[jx * span - rx] == 0) continue;
+      if (!phase.runs.empty() && phase.runs.back().row == jy &&
+          phase.runs.back().last_column == jx - 1) {
+        phase.runs.back().last_column = jx;
+      } else {
+        phase.runs.push_back({jy, jx, jx});
+      }
+    }
+  }
+  return phase;
+}
+
 // The candidate area of `points` for every top-level span the scene's levels can have.
 CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius_px,
                                 const PreparedScene& scene) {
@@ -144,75 +171,48 @@ CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius
     const int span = scene.Level(top).spread_px << top;
     if (area.ForSpan(span) != nullptr) continue;
     // A window starting up to span - 1 pixels left of or above the disks still reaches them.
-    CandidateArea::Reach reach{span, disks_box.tl() - cv::Point(span - 1, span - 1), cv::Mat()};
+    CandidateArea::Reach reach{span, disks_box.tl() - cv::Point(span - 1, span - 1), cv::Mat(), {}};
     cv::Mat padded = cv::Mat::zeros(disks_box.height + span - 1, disks_box.width + span - 1, CV_8U);
     disks.copyTo(padded(cv::Rect(cv::Point(span - 1, span - 1), disks_box.size())));
     cv::dilate(padded, reach.reach, cv::Mat::ones(span, span, CV_8U), cv::Point(0, 0), 1,
                cv::BORDER_CONSTANT, cv::Scalar(0));
+    reach.phases.reserve(static_cast<std::size_t>(span) * static_cast<std::size_t>(span));
+    for (int ry = 0; ry < span; ++ry) {
+      for (int rx = 0; rx < span; ++rx)
+        reach.phases.push_back(SamplePhase(reach.reach, span, rx, ry));
+    }
     area.by_span.push_back(std::move(reach));
   }
   return area;
 }
 
-// The top-level cells near some candidate point, as a mask and as merged row spans: scored
-// without a pass over the whole grid. Cell (gx, gy) puts the template's anchor in
-// [gx * span, (gx + 1) * span) + anchor, so it is near when the reach map says so there.
-struct CandidateCells {
-  cv::Size cells;
-  std::vector<std::uint8_t> near;  // row-major over `cells`
+// The top-level cells near some candidate point, as merged row spans in scan order (scored
+// without a pass over the whole grid). Cell (gx, gy) puts the template's anchor in
+// [gx * span, (gx + 1) * span) + anchor, so it is near when the reach map says so there: cell
+// g is cell g - shift of one phase of the sampled reach map.
+std::vector<GridRowSpan> NearCells(const CandidateGeometry& geometry, const cv::Size& cells,
+                                   const CandidateArea& area) {
   std::vector<GridRowSpan> spans;
-
-  bool Contains(const cv::Point& cell) const {
-    return near[static_cast<std::size_t>(cell.y) * cells.width + cell.x] != 0;
-  }
-};
-
-int CeilDiv(int value, int divisor) { return -FloorDiv(-value, divisor); }
-
-CandidateCells NearCells(const CandidateGeometry& geometry, const cv::Size& cells,
-                         const CandidateArea& area) {
-  CandidateCells result{
-      cells, std::vector<std::uint8_t>(static_cast<std::size_t>(cells.area()), 0), {}};
   const int span = geometry.cell_span_px;
   const CandidateArea::Reach* reach = area.ForSpan(span);
-  if (reach == nullptr) return result;
+  if (reach == nullptr) return spans;
   const cv::Point first = reach->origin - geometry.anchor;  // window corner of reach(0, 0)
-  const int gx0 = std::max(CeilDiv(first.x, span), 0);
-  const int gx1 = std::min(FloorDiv(first.x + reach->reach.cols - 1, span), cells.width - 1);
-  const int gy0 = std::max(CeilDiv(first.y, span), 0);
-  const int gy1 = std::min(FloorDiv(first.y + reach->reach.rows - 1, span), cells.height - 1);
-  for (int gy = gy0; gy <= gy1; ++gy) {
-    const std::uint8_t* reach_row = reach->reach.ptr<std::uint8_t>(gy * span - first.y);
-    std::uint8_t* row = result.near.data() + static_cast<std::size_t>(gy) * cells.width;
-    for (int gx = gx0; gx <= gx1; ++gx) {
-      if (reach_row[gx * span - first.x] == 0) continue;
-      row[gx] = 1;
-      if (!result.spans.empty() && result.spans.back().row == gy &&
-          result.spans.back().last_column == gx - 1) {
-        result.spans.back().last_column = gx;
-      } else {
-        result.spans.push_back({gy, gx, gx});
-      }
-    }
+  const cv::Point shift(FloorDiv(first.x, span), FloorDiv(first.y, span));
+  const cv::Point residue = first - shift * span;
+  const CandidateArea::Reach::Phase& phase =
+      reach->phases[static_cast<std::size_t>(residue.y) * span + residue.x];
+  for (const GridRowSpan& run : phase.runs) {
+    const int gy = run.row + shift.y;
+    if (gy < 0 || gy >= cells.height) continue;
+    const int gx0 = std::max(run.first_column + shift.x, 0);
+    const int gx1 = std::min(run.last_column + shift.x, cells.width - 1);
+    if (gx0 <= gx1) spans.push_back({gy, gx0, gx1});
   }
-  return result;
+  return spans;
 }
 
-// Grid positions at or above the threshold that `accept` takes, best first, at most `max_hits`.
-template <typename Accept>
-std::vector<CoarseHit> CoarseHits(const GridSimilarity& grid, float threshold_percent, int max_hits,
-                                  Accept&& accept) {
-  // Cells not scored hold 0, which never passes: the threshold is above 0.
-  const int min_sum = std::max(MinimumSumForPercent(threshold_percent, grid.feature_count), 1);
-  std::vector<CoarseHit> hits;
-  for (int gy = 0; gy < grid.sums.rows; ++gy) {
-    const auto* row = grid.sums.ptr<std::uint16_t>(gy);
-    // Most rows hold no hit: a (vectorized) maximum rejects them without a branch per cell.
-    if (*std::max_element(row, row + grid.sums.cols) < min_sum) continue;
-    for (int gx = 0; gx < grid.sums.cols; ++gx) {
-      if (row[gx] >= min_sum && accept(cv::Point(gx, gy))) hits.push_back({row[gx], {gx, gy}});
-    }
-  }
+// The hits, best first, at most `max_hits`.
+void KeepBestHits(std::vector<CoarseHit>& hits, int max_hits) {
   const auto better = [](const CoarseHit& a, const CoarseHit& b) {
     return std::make_tuple(-a.sum, a.cell.y, a.cell.x) <
            std::make_tuple(-b.sum, b.cell.y, b.cell.x);
@@ -223,6 +223,29 @@ std::vector<CoarseHit> CoarseHits(const GridSimilarity& grid, float threshold_pe
   } else {
     std::sort(hits.begin(), hits.end(), better);
   }
+}
+
+// Grid positions at or above the threshold, best first, at most `max_hits`: over the whole grid
+// or, when `spans` is given, over those cells only (the others were not scored).
+std::vector<CoarseHit> CoarseHits(const GridSimilarity& grid, float threshold_percent, int max_hits,
+                                  const std::vector<GridRowSpan>* spans) {
+  // Cells not scored hold 0, which never passes: the threshold is above 0.
+  const int min_sum = std::max(MinimumSumForPercent(threshold_percent, grid.feature_count), 1);
+  std::vector<CoarseHit> hits;
+  const auto collect = [&](int gy, int gx0, int gx1) {
+    const auto* row = grid.sums.ptr<std::uint16_t>(gy);
+    // Most rows hold no hit: a (vectorized) maximum rejects them without a branch per cell.
+    if (*std::max_element(row + gx0, row + gx1 + 1) < min_sum) return;
+    for (int gx = gx0; gx <= gx1; ++gx) {
+      if (row[gx] >= min_sum) hits.push_back({row[gx], {gx, gy}});
+    }
+  };
+  if (spans == nullptr) {
+    for (int gy = 0; gy < grid.sums.rows; ++gy) collect(gy, 0, grid.sums.cols - 1);
+  } else {
+    for (const GridRowSpan& span : *spans) collect(span.row, span.first_column, span.last_column);
+  }
+  KeepBestHits(hits, max_hits);
   return hits;
 }
 
@@ -313,23 +336,20 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
   GridSimilarity grid;
-  CandidateCells near;
+  std::vector<GridRowSpan> near;
   if (!area.restricted) {
     grid = ComputeGridSimilarity(record.levels[top], top_level, levels[top], similarity);
   } else {
     near = NearCells(geometry, cells, area);
-    if (near.spans.empty()) return result;
-    grid = ComputeGridSimilarityInSpans(record.levels[top], top_level, levels[top], near.spans,
-                                        similarity);
+    if (near.empty()) return result;
+    grid =
+        ComputeGridSimilarityInSpans(record.levels[top], top_level, levels[top], near, similarity);
   }
-  const auto accept = [&](const cv::Point& cell) {
-    return !area.restricted || near.Contains(cell);
-  };
   result.top = top;
   result.level0_features = levels[0].usable_features;
   result.half_box = geometry.half_box;
-  result.hits =
-      CoarseHits(grid, options.threshold_percent, options.max_candidates_per_template, accept);
+  result.hits = CoarseHits(grid, options.threshold_percent, options.max_candidates_per_template,
+                           area.restricted ? &near : nullptr);
   for (CoarseHit& hit : result.hits) {
     hit.percent = SimilarityPercent(hit.sum, levels[top].usable_features);
   }
