@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -90,6 +91,24 @@ std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
     throw Error("template " + std::to_string(record.id) + ": " + error.what());
   }
   return summaries;
+}
+
+// The top level UsableLevels would give (-1: none), without summarising the levels below it:
+// each needs only one feature of a modality the scene has.
+int UsableTopLevel(const TemplateRecord& record, const PreparedScene& scene) {
+  const int available = std::min(static_cast<int>(record.levels.size()), scene.LevelCount());
+  int top = -1;
+  for (int level = 0; level < available; ++level) {
+    const std::vector<Feature>& features = record.levels[level].features;
+    const SceneLevel& scene_level = scene.Level(level);
+    const bool usable = std::any_of(features.begin(), features.end(), [&](const Feature& feature) {
+      return ModalityIndex(feature.modality) < kModalityCount &&
+             scene_level.HasModality(feature.modality);
+    });
+    if (!usable) break;
+    top = level;
+  }
+  return top;
 }
 
 // Grid cell (gx, gy) of level `top` stands for the level-0 top-left positions
@@ -306,9 +325,7 @@ std::optional<Refined> RefineHit(const TemplateRecord& record,
 // One template's top-level hits and what refining them needs.
 struct TemplateHits {
   const TemplateRecord* record = nullptr;
-  int top = 0;                                  // top pyramid level scored
-  int level0_features = 0;                      // usable features at level 0
-  std::vector<TemplateLevelSummary> summaries;  // UsableLevels, levels 0..top
+  int top = 0;  // top pyramid level scored
   cv::Point half_box;
   std::vector<CoarseHit> hits;  // best first
 };
@@ -327,33 +344,38 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   TemplateHits result;
   result.record = &record;
   if (record.status == TemplateStatus::kTooFewFeatures) return result;
-  std::vector<TemplateLevelSummary> levels = UsableLevels(record, scene);
-  if (levels.empty()) return result;
-  const int top = static_cast<int>(levels.size()) - 1;
+  // Only the scored level is summarised (and its features checked) here: the levels below it
+  // are summarised for the hits that get refined (RefineRankedHit), a few thousand at most.
+  const int top = UsableTopLevel(record, scene);
+  if (top < 0) return result;
   const SceneLevel& top_level = scene.LinearizedLevel(top);
-  const cv::Size cells = GridPositionCount(levels[top].extent, top_level);
+  TemplateLevelSummary top_summary;
+  try {
+    top_summary = SummarizeTemplateLevel(record.levels[top], top_level);
+  } catch (const Error& error) {
+    throw Error("template " + std::to_string(record.id) + ": " + error.what());
+  }
+  const cv::Size cells = GridPositionCount(top_summary.extent, top_level);
   if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
   GridSimilarity grid;
   std::vector<GridRowSpan> near;
   if (!area.restricted) {
-    grid = ComputeGridSimilarity(record.levels[top], top_level, levels[top], similarity);
+    grid = ComputeGridSimilarity(record.levels[top], top_level, top_summary, similarity);
   } else {
     near = NearCells(geometry, cells, area);
     if (near.empty()) return result;
     grid =
-        ComputeGridSimilarityInSpans(record.levels[top], top_level, levels[top], near, similarity);
+        ComputeGridSimilarityInSpans(record.levels[top], top_level, top_summary, near, similarity);
   }
   result.top = top;
-  result.level0_features = levels[0].usable_features;
   result.half_box = geometry.half_box;
   result.hits = CoarseHits(grid, options.threshold_percent, options.max_candidates_per_template,
                            area.restricted ? &near : nullptr);
   for (CoarseHit& hit : result.hits) {
-    hit.percent = SimilarityPercent(hit.sum, levels[top].usable_features);
+    hit.percent = SimilarityPercent(hit.sum, top_summary.usable_features);
   }
-  if (!result.hits.empty()) result.summaries = std::move(levels);
   return result;
 }
 
@@ -386,14 +408,15 @@ std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template,
 std::optional<Candidate> RefineRankedHit(const TemplateHits& source, const CoarseHit& hit,
                                          const PreparedScene& scene, const MatchOptions& options) {
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
+  const std::vector<TemplateLevelSummary> summaries = UsableLevels(*source.record, scene);
   const std::optional<Refined> refined =
-      RefineHit(*source.record, source.summaries, scene, source.top, hit, similarity);
-  const int min_level0_sum =
-      MinimumSumForPercent(options.threshold_percent, source.level0_features);
+      RefineHit(*source.record, summaries, scene, source.top, hit, similarity);
+  const int level0_features = summaries.front().usable_features;
+  const int min_level0_sum = MinimumSumForPercent(options.threshold_percent, level0_features);
   if (!refined || refined->sum < min_level0_sum) return std::nullopt;
   Candidate candidate;
   candidate.match = {refined->position_px.x, refined->position_px.y,
-                     SimilarityPercent(refined->sum, source.level0_features), source.record->id};
+                     SimilarityPercent(refined->sum, level0_features), source.record->id};
   candidate.obj_id = source.record->obj_id;
   candidate.centre_px = cv::Point2f(refined->position_px + source.half_box);
   return candidate;
@@ -451,6 +474,9 @@ void MatchOptions::Validate() const {
   if (max_refinements < 1) {
     throw Error("match max_refinements must be >= 1, got " + std::to_string(max_refinements));
   }
+  if (!(tree_descend > 0.0f && tree_descend <= 1.0f)) {
+    throw Error("tree descend share must be in (0, 1], got " + std::to_string(tree_descend));
+  }
   if (max_candidates_per_template < 1) {
     throw Error("match max_candidates_per_template must be >= 1, got " +
                 std::to_string(max_candidates_per_template));
@@ -500,10 +526,51 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      const MatchOptions& options,
                                      const std::vector<cv::Point>* candidate_points,
                                      int candidate_radius_px) {
-  const TemplateSearch search{templates, candidate_points};
+  const TemplateSearch search{templates, candidate_points, {}};
   return MatchTemplateGroups(scene, std::span<const TemplateSearch>(&search, 1), options,
                              candidate_radius_px);
 }
+
+namespace {
+
+// The templates of `search` to score: all of them, or with view clusters the members of the
+// clusters whose representatives score best (see TemplateSearch).
+std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search,
+                                                    const CandidateArea& area,
+                                                    const PreparedScene& scene,
+                                                    const MatchOptions& options) {
+  std::vector<const TemplateRecord*> chosen;
+  const auto all = [&] {
+    for (const TemplateRecord& record : search.templates) chosen.push_back(&record);
+    return chosen;
+  };
+  if (search.clusters.empty() || options.tree_descend >= 1.0f) return all();
+  MatchOptions coarse = options;
+  coarse.threshold_percent =
+      std::max(1.0f, options.threshold_percent - kRepresentativeMarginPercent);
+  coarse.max_candidates_per_template = 1;  // the best position is all the ranking needs
+  std::vector<float> best(search.clusters.size(), -1.0f);
+  tbb::parallel_for(std::size_t{0}, search.clusters.size(), [&](std::size_t c) {
+    const TemplateRecord& representative = search.templates[search.clusters[c].representative];
+    const TemplateHits hits = ScoreTopLevel(representative, scene, coarse, area);
+    if (!hits.hits.empty()) best[c] = hits.hits.front().percent;
+  });
+  std::vector<std::size_t> order(search.clusters.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return best[a] > best[b]; });
+  const auto descended = static_cast<std::size_t>(
+      std::ceil(options.tree_descend * static_cast<float>(search.clusters.size())));
+  for (std::size_t k = 0; k < std::min(descended, order.size()); ++k) {
+    if (best[order[k]] < 0.0f) break;  // no representative from here on came near a hit
+    for (std::uint32_t member : search.clusters[order[k]].members) {
+      chosen.push_back(&search.templates[member]);
+    }
+  }
+  return chosen;
+}
+
+}  // namespace
 
 std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                                           std::span<const TemplateSearch> searches,
@@ -523,7 +590,9 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
                         : MakeCandidateArea(*search.candidate_points, radius_px, scene));
-    for (const TemplateRecord& record : search.templates) work.emplace_back(&record, &areas.back());
+    for (const TemplateRecord* record : TemplatesToScore(search, areas.back(), scene, options)) {
+      work.emplace_back(record, &areas.back());
+    }
   }
   // Two passes: every template scores its top level; then only the best hits over all
   // templates are refined down the pyramid (refinement costs far more per hit than scoring).

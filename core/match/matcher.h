@@ -13,6 +13,7 @@
 
 #include "match/scene_level.h"
 #include "match/simd.h"
+#include "match/view_clusters.h"
 #include "templates/template_record.h"
 
 namespace layermod {
@@ -38,6 +39,9 @@ struct MatchOptions {
   // threshold at several positions. Scene-Patch with 5 blocks found as many targets with 2000
   // shared as with 1000 per block (up to 5000), on four synthetic scene sets.
   int max_refinements = 2000;
+  // Searches with view clusters (TemplateSearch::clusters): the share of clusters whose members
+  // are all scored, best representatives first. 1 scores every template (the flat search).
+  float tree_descend = 0.15f;
   SimdPath simd = SimdPath::kAuto;
 
   void Validate() const;  // throws Error naming the bad field
@@ -110,10 +114,17 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 // in one call: as MatchTemplates over their union, with one refinement budget, one ranking and
 // one suppression. Scene-Patch matches each depth layer's templates around the points of its
 // kept blocks this way.
+//
+// With view clusters over `templates` (match/view_clusters.h), the search first scores each
+// cluster's representative at the top level with a threshold lowered by
+// kRepresentativeMarginPercent, then every member of the best MatchOptions::tree_descend share
+// of the clusters (by their representative's best top-level similarity); the rest as above.
 struct TemplateSearch {
   std::span<const TemplateRecord> templates;
   const std::vector<cv::Point>* candidate_points = nullptr;
+  std::span<const ViewCluster> clusters;  // empty: every template is scored
 };
+inline constexpr float kRepresentativeMarginPercent = 20.0f;
 std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                                           std::span<const TemplateSearch> searches,
                                           const MatchOptions& options, int candidate_radius_px = 0);

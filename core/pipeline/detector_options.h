@@ -69,6 +69,11 @@ void VisitDetectorOptions(Options& options, Visitor&& visitor) {
                               "Top-level hits refined down the pyramid per object and frame",
                               matching, 1, 1e7},
           options.match.max_refinements);
+  visitor(DetectorOptionField{"tree_descend",
+                              "Share of view clusters searched in full in layers with a view "
+                              "tree (1 = flat search)",
+                              matching, 0.001, 1},
+          options.match.tree_descend);
   visitor(DetectorOptionField{"blocks", "Scene blocks kept by coarse positioning (0 = all)", coarse,
                               0, 1000},
           options.coarse.max_blocks);

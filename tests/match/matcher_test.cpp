@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <set>
 
 #include "match_test_util.h"
 #include "util/error.h"
@@ -341,7 +342,7 @@ TEST(MatcherTest, TemplateGroupsShareOneRefinementBudget) {
   MatchOptions options;
   options.threshold_percent = 95.0f;
   options.max_refinements = 2;
-  const std::vector<TemplateSearch> searches = {{left, nullptr}, {right, nullptr}};
+  const std::vector<TemplateSearch> searches = {{left, nullptr, {}}, {right, nullptr, {}}};
   const std::vector<RawMatch> matches = MatchTemplateGroups(prepared, searches, options);
   // Two refinements over both groups: the best two top-level hits, which all tie at 100 %, so
   // the two lowest ids, both of the left group.
@@ -355,11 +356,46 @@ TEST(MatcherTest, TemplateGroupsShareOneRefinementBudget) {
   EXPECT_EQ(Match(prepared, all, options), matches);
   // Candidate points per group: the right set searched only around its second template.
   const std::vector<cv::Point> near_second = {cv::Point(220, 100)};
-  const std::vector<TemplateSearch> restricted = {{right, &near_second}};
+  const std::vector<TemplateSearch> restricted = {{right, &near_second, {}}};
   options.max_refinements = 10;
   const std::vector<RawMatch> found = MatchTemplateGroups(prepared, restricted, options, 4);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].template_id, 11u);
+}
+
+TEST(MatcherTest, TreeSearchScoresOnlyTheMembersOfTheBestClusters) {
+  cv::RNG rng(71);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  test::TestScene elsewhere = test::RandomScene({320, 240}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  // Cluster 0: a representative and a member that both match. Cluster 1: a representative
+  // from another scene (no match) and a member that matches.
+  std::vector<TemplateRecord> templates = {
+      test::TemplateFromScene(scene, {20, 20, 40, 40}, 63, 0, rng),
+      test::TemplateFromScene(scene, {120, 20, 40, 40}, 63, 1, rng),
+      test::TemplateFromScene(elsewhere, {20, 120, 40, 40}, 63, 2, rng),
+      test::TemplateFromScene(scene, {220, 120, 40, 40}, 63, 3, rng)};
+  const std::vector<ViewCluster> clusters = {{0, {0, 1}}, {2, {2, 3}}};
+  MatchOptions options;
+  options.threshold_percent = 95.0f;
+  const auto ids = [&](float descend) {
+    options.tree_descend = descend;
+    const std::vector<TemplateSearch> search = {{templates, nullptr, clusters}};
+    std::set<std::uint32_t> found;
+    for (const RawMatch& match : MatchTemplateGroups(prepared, search, options)) {
+      found.insert(match.template_id);
+    }
+    return found;
+  };
+  EXPECT_EQ(ids(0.5f), (std::set<std::uint32_t>{0, 1}));     // only the best cluster
+  EXPECT_EQ(ids(1.0f), (std::set<std::uint32_t>{0, 1, 3}));  // every template: the flat search
+  options.tree_descend = 1.0f;
+  EXPECT_EQ(
+      MatchTemplateGroups(prepared, std::vector<TemplateSearch>{{templates, nullptr, {}}}, options),
+      MatchTemplateGroups(prepared, std::vector<TemplateSearch>{{templates, nullptr, clusters}},
+                          options));
+  options.tree_descend = 0.0f;
+  EXPECT_THROW(options.Validate(), Error);
 }
 
 }  // namespace
