@@ -20,6 +20,7 @@ namespace {
 
 struct BenchArgs : EvaluationArgs {
   bool color_only = false;
+  bool tree_vs_flat = false;
   std::string out;
 };
 
@@ -37,16 +38,25 @@ void RunBenchCommand(const BenchArgs& args) {
   const FrameSelectionOptions selection = BuildSelection(args);
   CheckWritableTarget(args.out);
   const Detector detector = LoadDetector(args);
-  const BenchSuite suite = args.color_only ? BenchSuite::kColorOnly : BenchSuite::kDepth;
+  if (args.color_only && args.tree_vs_flat) {
+    throw CLI::ValidationError("--color-only and --tree-vs-flat: choose one");
+  }
+  const BenchSuite suite = args.color_only     ? BenchSuite::kColorOnly
+                           : args.tree_vs_flat ? BenchSuite::kTreeVsFlat
+                                               : BenchSuite::kDepth;
   const BenchResult result = RunWithProgress([&](const JobControl& job) {
     return RunBench(detector, suite, options, args.dataset, selection, metrics, job);
   });
   WriteFileAtomically(
       args.out, BenchReportJson(BuildRunInfo(args, selection, metrics), result).dump(2) + "\n");
   std::printf("%s", BenchTable(result).c_str());
-  std::printf("templates     %zu (cv::linemod took %d, refused %d, in %.1f s)\n", result.templates,
-              result.linemod_training.templates, result.linemod_training.refused,
-              result.linemod_training.seconds);
+  if (suite == BenchSuite::kTreeVsFlat) {
+    std::printf("templates     %zu\n", result.templates);
+  } else {
+    std::printf("templates     %zu (cv::linemod took %d, refused %d, in %.1f s)\n",
+                result.templates, result.linemod_training.templates,
+                result.linemod_training.refused, result.linemod_training.seconds);
+  }
   std::printf("report        %s\n", args.out.c_str());
 }
 
@@ -59,6 +69,9 @@ void AddBenchCommand(CLI::App& app) {
   AddEvaluationOptions(command, *args);
   command->add_flag("--color-only", args->color_only,
                     "RGB datasets: LINE-2D (color-only mode) vs cv::linemod LINE-2D");
+  command->add_flag("--tree-vs-flat", args->tree_vs_flat,
+                    "Large archives: Scene-Patch with the view tree (--tree-descend) vs the flat "
+                    "search, no cv::linemod");
   command->add_option("--out", args->out, "bench.json to write")->required();
   command->callback([args] { RunBenchCommand(*args); });
 }

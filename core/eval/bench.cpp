@@ -2,6 +2,7 @@
 #include "eval/bench.h"
 
 #include <cstdio>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "eval/evaluation.h"
@@ -22,6 +23,18 @@ EvalMethod DetectorModeMethod(const Detector& detector, DetectorOptions options,
                               DetectionMode mode) {
   options.mode = mode;
   return DetectorMethod(detector, options);
+}
+
+EvalMethod ScenePatchMethod(const Detector& detector, DetectorOptions options, std::string name) {
+  options.mode = DetectionMode::kScenePatch;
+  EvalMethod method = DetectorMethod(detector, options);
+  method.name = std::move(name);
+  return method;
+}
+
+DetectorOptions FlatSearch(DetectorOptions options) {
+  options.match.tree_descend = 1.0f;
+  return options;
 }
 
 EvalMethod LinemodMethod(const OpenCvLinemod& linemod, std::string name) {
@@ -62,7 +75,15 @@ nlohmann::json RatiosJson(const std::vector<MethodSummary>& methods) {
 }  // namespace
 
 std::string_view SuiteName(BenchSuite suite) {
-  return suite == BenchSuite::kDepth ? "depth" : "color-only";
+  switch (suite) {
+    case BenchSuite::kDepth:
+      return "depth";
+    case BenchSuite::kColorOnly:
+      return "color-only";
+    case BenchSuite::kTreeVsFlat:
+      return "tree-vs-flat";
+  }
+  return "depth";
 }
 
 BenchResult RunBench(const Detector& detector, BenchSuite suite,
@@ -72,7 +93,7 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
                      const JobControl& job) {
   detector_options.Validate();
   metrics.Validate();
-  const bool with_depth = suite == BenchSuite::kDepth;
+  const bool with_depth = suite != BenchSuite::kColorOnly;
   const EvalPlan plan =
       PlanEvaluation(dataset_dir, DetectorObjectIds(detector), selection, with_depth);
   BenchResult result;
@@ -80,20 +101,25 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
   for (const TemplateArchive* archive : detector.archives()) {
     result.templates += archive->templates().size();
   }
-  OpenCvLinemodOptions linemod_options;
-  linemod_options.threshold_percent = detector_options.match.threshold_percent;
-  linemod_options.use_depth = with_depth;
-  const OpenCvLinemod linemod(detector.archives(), linemod_options, job);
-  result.linemod_training = linemod.training();
-
   std::vector<EvalMethod> methods;
-  if (with_depth) {
-    methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kScenePatch),
-               DetectorModeMethod(detector, detector_options, DetectionMode::kExhaustive),
-               LinemodMethod(linemod, "cv::linemod")};
+  std::unique_ptr<OpenCvLinemod> linemod;  // outlives the methods that call it
+  if (suite == BenchSuite::kTreeVsFlat) {
+    methods = {ScenePatchMethod(detector, detector_options, "scene-patch tree"),
+               ScenePatchMethod(detector, FlatSearch(detector_options), "scene-patch flat")};
   } else {
-    methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kColorOnly),
-               LinemodMethod(linemod, "cv::linemod LINE-2D")};
+    OpenCvLinemodOptions linemod_options;
+    linemod_options.threshold_percent = detector_options.match.threshold_percent;
+    linemod_options.use_depth = with_depth;
+    linemod = std::make_unique<OpenCvLinemod>(detector.archives(), linemod_options, job);
+    result.linemod_training = linemod->training();
+    if (with_depth) {
+      methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kScenePatch),
+                 DetectorModeMethod(detector, detector_options, DetectionMode::kExhaustive),
+                 LinemodMethod(*linemod, "cv::linemod")};
+    } else {
+      methods = {DetectorModeMethod(detector, detector_options, DetectionMode::kColorOnly),
+                 LinemodMethod(*linemod, "cv::linemod LINE-2D")};
+    }
   }
   const EnvelopeMisses misses = FindEnvelopeMisses(detector, plan);
   for (MethodRun& run : RunMethods(plan.dataset, plan.frames, methods, metrics, job)) {

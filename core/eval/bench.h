@@ -20,15 +20,16 @@ namespace layermod {
 
 // Which methods run side by side.
 enum class BenchSuite {
-  kDepth,      // scene-patch, exhaustive, cv::linemod (colour gradients + depth normals)
-  kColorOnly,  // color-only (LINE-2D), cv::linemod LINE-2D: for RGB datasets
+  kDepth,       // scene-patch, exhaustive, cv::linemod (colour gradients + depth normals)
+  kColorOnly,   // color-only (LINE-2D), cv::linemod LINE-2D: for RGB datasets
+  kTreeVsFlat,  // scene-patch with the view tree, scene-patch flat: for large archives
 };
 
 struct BenchResult {
   BenchSuite suite = BenchSuite::kDepth;
-  std::size_t templates = 0;  // in the archives
-  OpenCvLinemodTraining linemod_training;
-  std::vector<MethodSummary> methods;  // in BenchSuite order
+  std::size_t templates = 0;               // in the archives
+  OpenCvLinemodTraining linemod_training;  // none for kTreeVsFlat
+  std::vector<MethodSummary> methods;      // in BenchSuite order
 };
 
 // `detector_options` sets everything but the mode; cv::linemod uses its match threshold. With
@@ -39,7 +40,7 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
                      const FrameSelectionOptions& selection, const EvalMetricOptions& metrics,
                      const JobControl& job = {});
 
-// "depth" or "color-only".
+// "depth", "color-only" or "tree-vs-flat".
 std::string_view SuiteName(BenchSuite suite);
 
 // {tool_version, created_utc, setup (with the suite), templates, linemod_training, methods: [...],

@@ -64,5 +64,21 @@ TEST(BenchTest, ColourOnlySuiteRunsWithoutDepth) {
   EXPECT_EQ(result.methods[1].frames, kImages);
 }
 
+TEST(BenchTest, TreeVsFlatSuiteRunsBothSearchesWithoutLinemod) {
+  test::TempDir dir;
+  const test::TinyEvalData data = test::MakeTinyEvalData(dir.path(), kImages);
+  const Detector detector({data.archive});
+  const BenchResult result = RunBench(detector, BenchSuite::kTreeVsFlat, {}, data.dataset, {}, {});
+  ASSERT_EQ(result.methods.size(), 2u);
+  EXPECT_EQ(result.methods[0].name, "scene-patch tree");
+  EXPECT_EQ(result.methods[1].name, "scene-patch flat");
+  EXPECT_EQ(result.linemod_training.templates, 0);  // cv::linemod is not built
+  // A few dozen templates per layer get no view tree: both runs are the same flat search.
+  EXPECT_EQ(result.methods[0].overall.correct, result.methods[1].overall.correct);
+  EXPECT_EQ(result.methods[0].overall.detected, result.methods[1].overall.detected);
+  EXPECT_EQ(result.methods[1].frames, kImages);
+  EXPECT_EQ(SuiteName(result.suite), "tree-vs-flat");
+}
+
 }  // namespace
 }  // namespace layermod
