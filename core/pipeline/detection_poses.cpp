@@ -33,13 +33,28 @@ Detection RefineCandidate(const RawMatch& match, const TemplateArchive& archive,
                           const Capture& capture, const DetectorOptions& options) {
   const TemplateRecord& tmpl = archive.templates().at(match.template_id);
   Detection detection = InitialDetection(match, tmpl, object, capture);
+  const Pose initial = detection.cam_from_model;
+  const auto verify = [&](const Pose& pose) {
+    return VerifyPose(pose_mesh, capture.camera, pose, capture.depth_mm, capture.color,
+                      options.verification);
+  };
   if (!capture.depth_mm.empty()) {
-    detection.icp = RefinePoseIcp(pose_mesh, capture.camera, capture.depth_mm,
-                                  detection.cam_from_model, options.icp);
+    detection.icp =
+        RefinePoseIcp(pose_mesh, capture.camera, capture.depth_mm, initial, options.icp);
     detection.cam_from_model = detection.icp.cam_from_model;
   }
-  detection.verification = VerifyPose(pose_mesh, capture.camera, detection.cam_from_model,
-                                      capture.depth_mm, capture.color, options.verification);
+  detection.verification = verify(detection.cam_from_model);
+  if (!detection.verification.accepted && !capture.depth_mm.empty()) {
+    // Point-to-plane ICP can slide along a view that is mostly one plane (sensor steps of 1 mm
+    // are enough to start it): the template's own pose is kept when it verifies and ICP's does
+    // not. The ICP figures stay those of the refinement that was not kept, which lowers the
+    // confidence.
+    const Verification at_initial = verify(initial);
+    if (at_initial.accepted) {
+      detection.cam_from_model = initial;
+      detection.verification = at_initial;
+    }
+  }
   return detection;
 }
 

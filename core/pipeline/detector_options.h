@@ -110,7 +110,7 @@ void VisitDetectorOptions(Options& options, Visitor&& visitor) {
   visitor(DetectorOptionField{"min_block_cells", "Smaller regions are dropped (cells)", regions, 1,
                               1e6},
           options.regions.min_block_cells);
-  visitor(DetectorOptionField{"icp_iterations", "ICP iterations at most", pose, 0, 1000},
+  visitor(DetectorOptionField{"icp_iterations", "ICP iterations at most", pose, 1, 1000},
           options.icp.max_iterations);
   visitor(
       DetectorOptionField{"icp_renders", "Visible-surface re-samplings during ICP", pose, 1, 100},

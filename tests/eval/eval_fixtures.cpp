@@ -3,6 +3,7 @@
 
 #include "mesh/model.h"
 #include "pipeline/training.h"
+#include "render/rasterizer.h"
 #include "support/test_paths.h"
 #include "synth/synthesizer.h"
 #include "synth_fixtures.h"
@@ -10,6 +11,8 @@
 namespace layermod::test {
 
 namespace {
+
+constexpr float kBackgroundBehindMm = 150.0f;  // a wall this far behind the part
 
 TrainingRequest SmallRequest(double dmin_mm, double dmax_mm) {
   TrainingRequest request;
@@ -27,6 +30,20 @@ TrainingRequest SmallRequest(double dmin_mm, double dmax_mm) {
 }
 
 }  // namespace
+
+Capture CaptureAtTemplatePose(const TemplateArchive& archive, const TemplateRecord& record) {
+  const PinholeCamera& camera = archive.camera();
+  const RenderedView view =
+      RenderView(archive.Object(record.obj_id).mesh, camera, record.cam_from_model);
+  Capture capture;
+  capture.camera = camera;
+  capture.color = cv::Mat(camera.height, camera.width, CV_8UC3, cv::Scalar(70, 80, 90));
+  capture.depth_mm = cv::Mat(camera.height, camera.width, CV_32F,
+                             cv::Scalar(record.layer_depth_mm + kBackgroundBehindMm));
+  view.color.copyTo(capture.color(view.roi), view.mask);
+  view.depth_mm.copyTo(capture.depth_mm(view.roi), view.mask);
+  return capture;
+}
 
 TemplateArchive TrainBracketArchive(double dmin_mm, double dmax_mm) {
   static const Model model = LoadModel(SourceDir() / "resources/sample/bracket.ply");

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "pipeline/detector.h"
 #include "support/test_paths.h"
 #include "templates/archive.h"
 
@@ -16,6 +17,10 @@ struct TinyEvalData {
   std::filesystem::path archive_file;
   TemplateArchive archive;  // object 1, the dataset's 320 x 240 camera
 };
+
+// The bracket rendered at the pose of one of its templates in front of a grey wall 150 mm
+// behind it: that template matches it exactly, so a detector must find it.
+Capture CaptureAtTemplatePose(const TemplateArchive& archive, const TemplateRecord& record);
 
 // A few dozen views of the bracket (obj 1, the synthetic camera) at the layers of dmin..dmax.
 TemplateArchive TrainBracketArchive(double dmin_mm, double dmax_mm);
