@@ -197,8 +197,9 @@ CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius
                cv::BORDER_CONSTANT, cv::Scalar(0));
     reach.phases.reserve(static_cast<std::size_t>(span) * static_cast<std::size_t>(span));
     for (int ry = 0; ry < span; ++ry) {
-      for (int rx = 0; rx < span; ++rx)
+      for (int rx = 0; rx < span; ++rx) {
         reach.phases.push_back(SamplePhase(reach.reach, span, rx, ry));
+      }
     }
     area.by_span.push_back(std::move(reach));
   }
@@ -445,8 +446,9 @@ std::vector<RawMatch> SuppressDuplicates(std::vector<Candidate> candidates,
       ++neighbours;
       same_template_near |= other->match.template_id == candidate.match.template_id;
     }
-    if (!same_template_near && neighbours < options.matches_per_location)
+    if (!same_template_near && neighbours < options.matches_per_location) {
       kept.push_back(&candidate);
+    }
   }
   std::vector<RawMatch> matches;
   matches.reserve(kept.size());
