@@ -53,10 +53,9 @@ QString BopFolderAmongFiles(const QCommandLineParser& parser, const CaptureOptio
   return {};
 }
 
-// The capture asked for on the command line, if any.
+// The capture asked for on the command line, if any. `folder_among_files`: BopFolderAmongFiles.
 bool CaptureFromArguments(const QCommandLineParser& parser, const CaptureOptions& options,
-                          layermod::ui::CaptureSource* source) {
-  const QString folder_among_files = BopFolderAmongFiles(parser, options);
+                          const QString& folder_among_files, layermod::ui::CaptureSource* source) {
   if (parser.isSet(options.bop) || !folder_among_files.isEmpty()) {
     *source = {parser.isSet(options.bop) ? parser.value(options.bop) : folder_among_files,
                parser.value(options.scene).toInt(),
@@ -112,8 +111,9 @@ int main(int argc, char** argv) {
   layermod::ui::SetBatchMode(batch);
   layermod::ui::MainWindow window;
   window.show();
+  const QString folder_among_files = BopFolderAmongFiles(parser, capture_options);
   QStringList files = parser.positionalArguments();
-  files.removeAll(BopFolderAmongFiles(parser, capture_options));  // opened as the capture below
+  files.removeAll(folder_among_files);  // opened as the capture below
   window.OpenFiles(files);
   if (parser.isSet(capture_options.overlays)) {
     window.detection_panel()->SetOverlays(
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     QObject::connect(window.detection_panel(), &layermod::ui::DetectionPanel::DetectionFinished,
                      &window, [&window, index] { window.ShowDetectionInScene(index); });
   }
-  if (CaptureFromArguments(parser, capture_options, &capture)) {
+  if (CaptureFromArguments(parser, capture_options, folder_among_files, &capture)) {
     window.detection_panel()->OpenCapture(capture);
   }
   if (batch) {

@@ -25,9 +25,9 @@ EvalMethod DetectorModeMethod(const Detector& detector, DetectorOptions options,
   return DetectorMethod(detector, options);
 }
 
-EvalMethod ScenePatchMethod(const Detector& detector, DetectorOptions options, std::string name) {
-  options.mode = DetectionMode::kScenePatch;
-  EvalMethod method = DetectorMethod(detector, options);
+EvalMethod ScenePatchMethod(const Detector& detector, const DetectorOptions& options,
+                            std::string name) {
+  EvalMethod method = DetectorModeMethod(detector, options, DetectionMode::kScenePatch);
   method.name = std::move(name);
   return method;
 }

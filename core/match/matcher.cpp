@@ -44,20 +44,17 @@ struct Refined {
 // top-level cell comes near a point (see Reach below).
 struct CandidateArea {
   bool restricted = false;  // false: every position is searched
-  // Per top-level cell span (level-0 pixels per cell): reach(q - origin) != 0 iff some disk
-  // pixel lies in [q.x, q.x + span) x [q.y, q.y + span). Outside the image: no disk pixel.
+  // Per top-level cell span (level-0 pixels per cell), from the reach map: reach(q - origin) != 0
+  // iff some disk pixel lies in [q.x, q.x + span) x [q.y, q.y + span) (outside the image: no
+  // disk pixel). The map is kept sampled every `span` pixels, once for each of the span x span
+  // phases a template's grid can have against it (index ry * span + rx): cell j of phase
+  // (rx, ry) is reach(j.y * span - ry, j.x * span - rx), 0 outside. A template's near cells are
+  // then a shifted copy of one phase, with no pass over the map per template.
   struct Reach {
     int span = 0;
     cv::Point origin;
-    cv::Mat reach;  // CV_8U
-    // The reach map sampled every `span` pixels, once for each of the span x span phases a
-    // template's grid can have against it (index ry * span + rx): cell j of phase (rx, ry) is
-    // reach(j.y * span - ry, j.x * span - rx), 0 outside. A template's near cells are then a
-    // shifted copy of one phase, with no pass over the map per template.
-    struct Phase {
-      std::vector<GridRowSpan> runs;  // the non-zero cells as maximal row runs, in scan order
-    };
-    std::vector<Phase> phases;
+    // Per phase, its non-zero cells as maximal row runs, in scan order.
+    std::vector<std::vector<GridRowSpan>> phase_runs;
   };
   std::vector<Reach> by_span;
 
@@ -73,28 +70,9 @@ int FloorDiv(int value, int divisor) {
   return value >= 0 ? value / divisor : -((-value + divisor - 1) / divisor);
 }
 
-// The summary of each level both the template and the scene have, up to the first one without
-// a feature of a modality the scene has (such a level cannot be scored). Throws Error naming the
-// template for invalid features.
-std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
-                                               const PreparedScene& scene) {
-  const int available = std::min(static_cast<int>(record.levels.size()), scene.LevelCount());
-  std::vector<TemplateLevelSummary> summaries;
-  try {
-    for (int level = 0; level < available; ++level) {
-      const TemplateLevelSummary summary =
-          SummarizeTemplateLevel(record.levels[level], scene.Level(level));
-      if (summary.usable_features == 0) break;
-      summaries.push_back(summary);
-    }
-  } catch (const Error& error) {
-    throw Error("template " + std::to_string(record.id) + ": " + error.what());
-  }
-  return summaries;
-}
-
-// The top level UsableLevels would give (-1: none), without summarising the levels below it:
-// each needs only one feature of a modality the scene has.
+// The highest level both the template and the scene have that can be scored together with every
+// level below it, i.e. up to the first level without a feature of a modality the scene has
+// (-1: none). Needs only one such feature per level.
 int UsableTopLevel(const TemplateRecord& record, const PreparedScene& scene) {
   const int available = std::min(static_cast<int>(record.levels.size()), scene.LevelCount());
   int top = -1;
@@ -109,6 +87,27 @@ int UsableTopLevel(const TemplateRecord& record, const PreparedScene& scene) {
     top = level;
   }
   return top;
+}
+
+// SummarizeTemplateLevel of one level; throws Error naming the template for invalid features.
+TemplateLevelSummary SummarizeLevel(const TemplateRecord& record, int level,
+                                    const PreparedScene& scene) {
+  try {
+    return SummarizeTemplateLevel(record.levels[level], scene.Level(level));
+  } catch (const Error& error) {
+    throw Error("template " + std::to_string(record.id) + ": " + error.what());
+  }
+}
+
+// The summaries of levels 0..UsableTopLevel (empty when none can be scored).
+std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
+                                               const PreparedScene& scene) {
+  std::vector<TemplateLevelSummary> summaries;
+  const int top = UsableTopLevel(record, scene);
+  for (int level = 0; level <= top; ++level) {
+    summaries.push_back(SummarizeLevel(record, level, scene));
+  }
+  return summaries;
 }
 
 // Grid cell (gx, gy) of level `top` stands for the level-0 top-left positions
@@ -150,23 +149,23 @@ cv::Mat StampDisks(const std::vector<cv::Point>& points, int radius_px, const cv
   return disks;
 }
 
-CandidateArea::Reach::Phase SamplePhase(const cv::Mat& reach, int span, int rx, int ry) {
-  CandidateArea::Reach::Phase phase;
+// The non-zero cells of phase (rx, ry) of the reach map (see CandidateArea::Reach).
+std::vector<GridRowSpan> PhaseRuns(const cv::Mat& reach, int span, int rx, int ry) {
+  std::vector<GridRowSpan> runs;
   const int cols = (reach.cols - 1 + rx) / span + 1;
   const int rows = (reach.rows - 1 + ry) / span + 1;
   for (int jy = ry > 0 ? 1 : 0; jy < rows; ++jy) {
     const std::uint8_t* reach_row = reach.ptr<std::uint8_t>(jy * span - ry);
     for (int jx = rx > 0 ? 1 : 0; jx < cols; ++jx) {
       if (reach_row[jx * span - rx] == 0) continue;
-      if (!phase.runs.empty() && phase.runs.back().row == jy &&
-          phase.runs.back().last_column == jx - 1) {
-        phase.runs.back().last_column = jx;
+      if (!runs.empty() && runs.back().row == jy && runs.back().last_column == jx - 1) {
+        runs.back().last_column = jx;
       } else {
-        phase.runs.push_back({jy, jx, jx});
+        runs.push_back({jy, jx, jx});
       }
     }
   }
-  return phase;
+  return runs;
 }
 
 // The candidate area of `points` for every top-level span the scene's levels can have.
@@ -190,15 +189,16 @@ CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius
     const int span = scene.Level(top).spread_px << top;
     if (area.ForSpan(span) != nullptr) continue;
     // A window starting up to span - 1 pixels left of or above the disks still reaches them.
-    CandidateArea::Reach reach{span, disks_box.tl() - cv::Point(span - 1, span - 1), cv::Mat(), {}};
+    CandidateArea::Reach reach{span, disks_box.tl() - cv::Point(span - 1, span - 1), {}};
     cv::Mat padded = cv::Mat::zeros(disks_box.height + span - 1, disks_box.width + span - 1, CV_8U);
     disks.copyTo(padded(cv::Rect(cv::Point(span - 1, span - 1), disks_box.size())));
-    cv::dilate(padded, reach.reach, cv::Mat::ones(span, span, CV_8U), cv::Point(0, 0), 1,
+    cv::Mat reach_map;
+    cv::dilate(padded, reach_map, cv::Mat::ones(span, span, CV_8U), cv::Point(0, 0), 1,
                cv::BORDER_CONSTANT, cv::Scalar(0));
-    reach.phases.reserve(static_cast<std::size_t>(span) * static_cast<std::size_t>(span));
+    reach.phase_runs.reserve(static_cast<std::size_t>(span) * static_cast<std::size_t>(span));
     for (int ry = 0; ry < span; ++ry) {
       for (int rx = 0; rx < span; ++rx) {
-        reach.phases.push_back(SamplePhase(reach.reach, span, rx, ry));
+        reach.phase_runs.push_back(PhaseRuns(reach_map, span, rx, ry));
       }
     }
     area.by_span.push_back(std::move(reach));
@@ -219,9 +219,9 @@ std::vector<GridRowSpan> NearCells(const CandidateGeometry& geometry, const cv::
   const cv::Point first = reach->origin - geometry.anchor;  // window corner of reach(0, 0)
   const cv::Point shift(FloorDiv(first.x, span), FloorDiv(first.y, span));
   const cv::Point residue = first - shift * span;
-  const CandidateArea::Reach::Phase& phase =
-      reach->phases[static_cast<std::size_t>(residue.y) * span + residue.x];
-  for (const GridRowSpan& run : phase.runs) {
+  const std::vector<GridRowSpan>& runs =
+      reach->phase_runs[static_cast<std::size_t>(residue.y) * span + residue.x];
+  for (const GridRowSpan& run : runs) {
     const int gy = run.row + shift.y;
     if (gy < 0 || gy >= cells.height) continue;
     const int gx0 = std::max(run.first_column + shift.x, 0);
@@ -346,16 +346,11 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   result.record = &record;
   if (record.status == TemplateStatus::kTooFewFeatures) return result;
   // Only the scored level is summarised (and its features checked) here: the levels below it
-  // are summarised for the hits that get refined (RefineRankedHit), a few thousand at most.
+  // only for the templates whose hits get refined (RefinedSummaries).
   const int top = UsableTopLevel(record, scene);
   if (top < 0) return result;
   const SceneLevel& top_level = scene.LinearizedLevel(top);
-  TemplateLevelSummary top_summary;
-  try {
-    top_summary = SummarizeTemplateLevel(record.levels[top], top_level);
-  } catch (const Error& error) {
-    throw Error("template " + std::to_string(record.id) + ": " + error.what());
-  }
+  const TemplateLevelSummary top_summary = SummarizeLevel(record, top, scene);
   const cv::Size cells = GridPositionCount(top_summary.extent, top_level);
   if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
@@ -406,10 +401,29 @@ std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template,
   return ranked;
 }
 
-std::optional<Candidate> RefineRankedHit(const TemplateHits& source, const CoarseHit& hit,
-                                         const PreparedScene& scene, const MatchOptions& options) {
+// UsableLevels of every template with a ranked hit, once per template (indexed like
+// `per_template`; empty for the others).
+std::vector<std::vector<TemplateLevelSummary>> RefinedSummaries(
+    const std::vector<TemplateHits>& per_template, const std::vector<RankedHit>& ranked,
+    const PreparedScene& scene) {
+  std::vector<std::size_t> sources;
+  sources.reserve(ranked.size());
+  for (const RankedHit& hit : ranked) sources.push_back(hit.source);
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+  std::vector<std::vector<TemplateLevelSummary>> summaries(per_template.size());
+  tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t i) {
+    summaries[sources[i]] = UsableLevels(*per_template[sources[i]].record, scene);
+  });
+  return summaries;
+}
+
+// `summaries`: UsableLevels of the hit's template.
+std::optional<Candidate> RefineRankedHit(const TemplateHits& source,
+                                         const std::vector<TemplateLevelSummary>& summaries,
+                                         const CoarseHit& hit, const PreparedScene& scene,
+                                         const MatchOptions& options) {
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
-  const std::vector<TemplateLevelSummary> summaries = UsableLevels(*source.record, scene);
   const std::optional<Refined> refined =
       RefineHit(*source.record, summaries, scene, source.top, hit, similarity);
   const int level0_features = summaries.front().usable_features;
@@ -535,18 +549,10 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 
 namespace {
 
-// The templates of `search` to score: all of them, or with view clusters the members of the
-// clusters whose representatives score best (see TemplateSearch).
-std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search,
-                                                    const CandidateArea& area,
-                                                    const PreparedScene& scene,
-                                                    const MatchOptions& options) {
-  std::vector<const TemplateRecord*> chosen;
-  const auto all = [&] {
-    for (const TemplateRecord& record : search.templates) chosen.push_back(&record);
-    return chosen;
-  };
-  if (search.clusters.empty() || options.tree_descend >= 1.0f) return all();
+// Each cluster's best top-level similarity of its representative, with the threshold lowered
+// by kRepresentativeMarginPercent; -1 where it has no hit even so.
+std::vector<float> RepresentativeScores(const TemplateSearch& search, const CandidateArea& area,
+                                        const PreparedScene& scene, const MatchOptions& options) {
   MatchOptions coarse = options;
   coarse.threshold_percent =
       std::max(1.0f, options.threshold_percent - kRepresentativeMarginPercent);
@@ -557,14 +563,29 @@ std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search
     const TemplateHits hits = ScoreTopLevel(representative, scene, coarse, area);
     if (!hits.hits.empty()) best[c] = hits.hits.front().percent;
   });
-  std::vector<std::size_t> order(search.clusters.size());
+  return best;
+}
+
+// The templates of `search` to score: all of them, or with view clusters the members of the
+// clusters whose representatives score best (see TemplateSearch).
+std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search,
+                                                    const CandidateArea& area,
+                                                    const PreparedScene& scene,
+                                                    const MatchOptions& options) {
+  std::vector<const TemplateRecord*> chosen;
+  if (search.clusters.empty() || options.tree_descend >= 1.0f) {
+    for (const TemplateRecord& record : search.templates) chosen.push_back(&record);
+    return chosen;
+  }
+  const std::vector<float> best = RepresentativeScores(search, area, scene, options);
+  std::vector<std::size_t> order(best.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return best[a] > best[b]; });
-  const auto descended = static_cast<std::size_t>(
-      std::ceil(options.tree_descend * static_cast<float>(search.clusters.size())));
-  for (std::size_t k = 0; k < std::min(descended, order.size()); ++k) {
-    if (best[order[k]] < 0.0f) break;  // no representative from here on came near a hit
+  const auto descended = std::min(
+      order.size(),
+      static_cast<std::size_t>(std::ceil(options.tree_descend * static_cast<float>(best.size()))));
+  for (std::size_t k = 0; k < descended && best[order[k]] >= 0.0f; ++k) {
     for (std::uint32_t member : search.clusters[order[k]].members) {
       chosen.push_back(&search.templates[member]);
     }
@@ -607,13 +628,15 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                       }
                     });
   const std::vector<RankedHit> ranked = RankHits(per_template, options);
+  const std::vector<std::vector<TemplateLevelSummary>> summaries =
+      RefinedSummaries(per_template, ranked, scene);
   std::vector<std::optional<Candidate>> refined(ranked.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ranked.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
                         const TemplateHits& source = per_template[ranked[i].source];
-                        refined[i] =
-                            RefineRankedHit(source, source.hits[ranked[i].hit], scene, options);
+                        refined[i] = RefineRankedHit(source, summaries[ranked[i].source],
+                                                     source.hits[ranked[i].hit], scene, options);
                       }
                     });
   std::vector<Candidate> candidates;

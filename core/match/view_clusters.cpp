@@ -19,7 +19,7 @@ std::vector<ViewCluster> ClusterViews(std::span<const TemplateRecord> templates,
   // The angle between rotations A and B is at most r iff trace(A^T B) >= 1 + 2 cos r.
   const double min_trace = 1.0 + 2.0 * std::cos(radius_deg * std::numbers::pi / 180.0);
   std::vector<ViewCluster> clusters;
-  std::vector<Eigen::Matrix3d> centres;
+  std::vector<Eigen::Matrix3d> centres;  // the representatives' rotations, packed for the scan
   for (std::size_t i = 0; i < templates.size(); ++i) {
     const TemplateRecord& record = templates[i];
     if (record.status == TemplateStatus::kTooFewFeatures) continue;
