@@ -44,8 +44,8 @@ CLI::Validator RangeCheck(const DetectorOptionField& field, DetectorFlags::Kind 
 // A default as the help shows it: floats by their shortest text ("0.8", not 0.800000011...).
 template <typename T>
 std::string DefaultText(const T& value) {
-  if constexpr (std::is_same_v<T, DetectionMode>) {
-    return std::string(ModeName(value));
+  if constexpr (kIsChoiceOption<T>) {
+    return std::string(OptionChoices<T>::Name(value));
   } else {
     char text[32];
     const auto end = std::to_chars(text, text + sizeof text, value).ptr;
@@ -66,8 +66,8 @@ void DetectorFlags::AddTo(CLI::App* command, const DetectorOptions& defaults) {
         command->add_option(OptionFlag(field))->description(std::string(field.help));
     option->default_str(DefaultText(value));
     Kind kind = Kind::kText;
-    if constexpr (std::is_same_v<T, DetectionMode>) {
-      option->type_name("MODE")->check(CLI::IsMember({"scene-patch", "exhaustive", "color-only"}));
+    if constexpr (kIsChoiceOption<T>) {
+      option->type_name("NAME")->check(CLI::IsMember(ChoiceNames<T>()));
     } else {
       kind = std::is_integral_v<T> ? Kind::kInteger : Kind::kReal;
       option->type_name(kind == Kind::kInteger ? "INT" : "NUMBER")->check(RangeCheck(field, kind));

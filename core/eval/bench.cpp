@@ -33,7 +33,7 @@ EvalMethod ScenePatchMethod(const Detector& detector, const DetectorOptions& opt
 }
 
 DetectorOptions FlatSearch(DetectorOptions options) {
-  options.match.tree_descend = 1.0f;
+  options.match.search = TemplateSearchMode::kFlat;
   return options;
 }
 

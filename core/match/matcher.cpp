@@ -472,6 +472,23 @@ std::vector<RawMatch> SuppressDuplicates(std::vector<Candidate> candidates,
 
 }  // namespace
 
+std::string_view SearchModeName(TemplateSearchMode search) {
+  switch (search) {
+    case TemplateSearchMode::kTree:
+      return "tree";
+    case TemplateSearchMode::kFlat:
+      return "flat";
+  }
+  return "?";
+}
+
+TemplateSearchMode ParseSearchMode(std::string_view text) {
+  for (TemplateSearchMode search : {TemplateSearchMode::kTree, TemplateSearchMode::kFlat}) {
+    if (text == SearchModeName(search)) return search;
+  }
+  throw Error("search: expected tree or flat, got '" + std::string(text) + "'");
+}
+
 void MatchOptions::Validate() const {
   if (!(threshold_percent > 0.0f && threshold_percent <= 100.0f)) {
     throw Error("match threshold_percent must be in (0, 100], got " +
@@ -573,7 +590,8 @@ std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search
                                                     const PreparedScene& scene,
                                                     const MatchOptions& options) {
   std::vector<const TemplateRecord*> chosen;
-  if (search.clusters.empty() || options.tree_descend >= 1.0f) {
+  if (search.clusters.empty() || options.search == TemplateSearchMode::kFlat ||
+      options.tree_descend >= 1.0f) {
     for (const TemplateRecord& record : search.templates) chosen.push_back(&record);
     return chosen;
   }

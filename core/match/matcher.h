@@ -9,6 +9,7 @@
 #include <memory>
 #include <opencv2/core.hpp>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "match/scene_level.h"
@@ -17,6 +18,14 @@
 #include "templates/template_record.h"
 
 namespace layermod {
+
+// How a template set with view clusters (TemplateSearch::clusters) is searched.
+enum class TemplateSearchMode {
+  kTree,  // cluster representatives first, then the members of the best clusters
+  kFlat,  // every template, as without clusters (for comparison)
+};
+std::string_view SearchModeName(TemplateSearchMode search);
+TemplateSearchMode ParseSearchMode(std::string_view text);  // throws Error
 
 struct MatchOptions {
   // Similarity a match needs, at the top level and at level 0. 70 rather than OpenCV's usual 80:
@@ -39,8 +48,9 @@ struct MatchOptions {
   // threshold at several positions. Scene-Patch with 5 blocks found as many targets with 2000
   // shared as with 1000 per block (up to 5000), on four synthetic scene sets.
   int max_refinements = 2000;
-  // Searches with view clusters (TemplateSearch::clusters): the share of clusters whose members
-  // are all scored, best representatives first. 1 scores every template (the flat search).
+  TemplateSearchMode search = TemplateSearchMode::kTree;
+  // Tree searches: the share of clusters whose members are all scored, best representatives
+  // first. 1 scores every template, as the flat search does.
   float tree_descend = 0.15f;
   SimdPath simd = SimdPath::kAuto;
 

@@ -32,11 +32,12 @@ void ReadNumber(const nlohmann::json& value, const DetectorOptionField& field,
   out = static_cast<T>(number);
 }
 
-void ReadMode(const nlohmann::json& value, const DetectorOptionField& field, std::string_view what,
-              DetectionMode& out) {
+template <typename T>
+void ReadChoice(const nlohmann::json& value, const DetectorOptionField& field,
+                std::string_view what, T& out) {
   if (!value.is_string()) throw FormatError(Describe(what, field) + " must be a string");
   try {
-    out = ParseDetectionMode(value.get<std::string>());
+    out = OptionChoices<T>::Parse(value.get<std::string>());
   } catch (const Error& error) {
     throw FormatError(Describe(what, field) + ": " + error.what());
   }
@@ -68,8 +69,8 @@ nlohmann::json DetectorOptionsToJson(const DetectorOptions& options) {
   nlohmann::json json = nlohmann::json::object();
   VisitDetectorOptions(options, [&](const DetectorOptionField& field, const auto& value) {
     using T = std::decay_t<decltype(value)>;
-    if constexpr (std::is_same_v<T, DetectionMode>) {
-      json[std::string(field.key)] = std::string(ModeName(value));
+    if constexpr (kIsChoiceOption<T>) {
+      json[std::string(field.key)] = std::string(OptionChoices<T>::Name(value));
     } else {
       json[std::string(field.key)] = value;
     }
@@ -86,8 +87,8 @@ DetectorOptions DetectorOptionsFromJson(const nlohmann::json& json, std::string_
     const auto it = json.find(field.key);
     if (it == json.end()) return;
     using T = std::decay_t<decltype(value)>;
-    if constexpr (std::is_same_v<T, DetectionMode>) {
-      ReadMode(*it, field, what, value);
+    if constexpr (kIsChoiceOption<T>) {
+      ReadChoice(*it, field, what, value);
     } else {
       ReadNumber(*it, field, what, value);
     }

@@ -6,6 +6,7 @@
 // exists everywhere or nowhere.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -29,8 +30,40 @@ std::string OptionFlag(const DetectorOptionField& field);
 // A range bound as the help and errors print it ("100", "0.5", "1e+07").
 std::string FormatRange(double value);
 
+// Settings chosen by name (the detection mode, the template search): their values in the order
+// help texts and the studio list them, and each value's name.
+template <typename T>
+struct OptionChoices {
+  static constexpr bool kIsChoice = false;
+};
+template <>
+struct OptionChoices<DetectionMode> {
+  static constexpr bool kIsChoice = true;
+  static constexpr std::array kValues = {DetectionMode::kScenePatch, DetectionMode::kExhaustive,
+                                         DetectionMode::kColorOnly};
+  static std::string_view Name(DetectionMode mode) { return ModeName(mode); }
+  static DetectionMode Parse(std::string_view text) { return ParseDetectionMode(text); }
+};
+template <>
+struct OptionChoices<TemplateSearchMode> {
+  static constexpr bool kIsChoice = true;
+  static constexpr std::array kValues = {TemplateSearchMode::kTree, TemplateSearchMode::kFlat};
+  static std::string_view Name(TemplateSearchMode search) { return SearchModeName(search); }
+  static TemplateSearchMode Parse(std::string_view text) { return ParseSearchMode(text); }
+};
+template <typename T>
+inline constexpr bool kIsChoiceOption = OptionChoices<T>::kIsChoice;
+
+// The names of a choice setting's values, in order.
+template <typename T>
+std::vector<std::string> ChoiceNames() {
+  std::vector<std::string> names;
+  for (T value : OptionChoices<T>::kValues) names.emplace_back(OptionChoices<T>::Name(value));
+  return names;
+}
+
 // Calls visitor(field, value&) for every setting of `options`, in table order. `value` is an
-// int&, float&, double& or DetectionMode&.
+// int&, float&, double& or a choice (kIsChoiceOption: DetectionMode&, TemplateSearchMode&).
 template <typename Options, typename Visitor>
 void VisitDetectorOptions(Options& options, Visitor&& visitor) {
   using G = std::string_view;
@@ -69,6 +102,11 @@ void VisitDetectorOptions(Options& options, Visitor&& visitor) {
                               "Top-level hits refined down the pyramid per object and frame",
                               matching, 1, 1e7},
           options.match.max_refinements);
+  visitor(DetectorOptionField{"search",
+                              "tree (best view clusters first, where layers have a view tree) "
+                              "or flat (every view)",
+                              matching, 0, 0},
+          options.match.search);
   visitor(DetectorOptionField{"tree_descend",
                               "Share of view clusters searched in full in layers with a view "
                               "tree (1 = flat search)",

@@ -389,6 +389,9 @@ TEST(MatcherTest, TreeSearchScoresOnlyTheMembersOfTheBestClusters) {
   };
   EXPECT_EQ(ids(0.5f), (std::set<std::uint32_t>{0, 1}));     // only the best cluster
   EXPECT_EQ(ids(1.0f), (std::set<std::uint32_t>{0, 1, 3}));  // every template: the flat search
+  options.search = TemplateSearchMode::kFlat;
+  EXPECT_EQ(ids(0.5f), (std::set<std::uint32_t>{0, 1, 3}));  // the flat search ignores the share
+  options.search = TemplateSearchMode::kTree;
   options.tree_descend = 1.0f;
   EXPECT_EQ(
       MatchTemplateGroups(prepared, std::vector<TemplateSearch>{{templates, nullptr, {}}}, options),

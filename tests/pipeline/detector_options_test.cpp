@@ -16,6 +16,7 @@ namespace {
 TEST(DetectorOptionsTest, JsonRoundTripKeepsEveryField) {
   DetectorOptions options;
   options.mode = DetectionMode::kExhaustive;
+  options.match.search = TemplateSearchMode::kFlat;
   options.match.threshold_percent = 81.5f;
   options.coarse.max_blocks = 3;
   options.icp.max_drift_deg = 12.0;
@@ -27,6 +28,8 @@ TEST(DetectorOptionsTest, JsonRoundTripKeepsEveryField) {
   const DetectorOptions back = DetectorOptionsFromJson(json, "test");
   EXPECT_EQ(DetectorOptionsToJson(back), json);
   EXPECT_EQ(back.mode, DetectionMode::kExhaustive);
+  EXPECT_EQ(json.at("search"), "flat");
+  EXPECT_EQ(back.match.search, TemplateSearchMode::kFlat);
   EXPECT_FLOAT_EQ(back.match.threshold_percent, 81.5f);
   EXPECT_EQ(back.coarse.max_blocks, 3);
 }
@@ -70,6 +73,9 @@ TEST(DetectorOptionsTest, BadValuesNameTheField) {
   EXPECT_EQ(read({{"min_confidence", -0.1}}), "profile field 'min_confidence' must lie in [0, 1]");
   EXPECT_EQ(read({{"threshold", "high"}}), "profile field 'threshold' must be a number");
   EXPECT_NE(read({{"mode", "psychic"}}).find("profile field 'mode'"), std::string::npos);
+  EXPECT_EQ(read({{"search", "deep"}}),
+            "profile field 'search': search: expected tree or flat, got 'deep'");
+  EXPECT_EQ(read({{"search", 1}}), "profile field 'search' must be a string");
   EXPECT_EQ(read({{"thresold", 70}}), "profile: unknown detector setting 'thresold'");
   EXPECT_EQ(read(nlohmann::json::array()), "profile is not a JSON object");
   // Each value in range, together inconsistent: the options' own validation speaks.

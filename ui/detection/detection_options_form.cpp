@@ -21,8 +21,6 @@
 namespace layermod::ui {
 namespace {
 
-constexpr DetectionMode kModes[] = {DetectionMode::kScenePatch, DetectionMode::kExhaustive,
-                                    DetectionMode::kColorOnly};
 constexpr char kOpenGroup[] = "matching";
 
 QString Text(std::string_view text) {
@@ -62,9 +60,9 @@ int DecimalsFor(double value, double max) {
 
 template <typename T>
 QWidget* MakeBox(const DetectorOptionField& field, const T& default_value) {
-  if constexpr (std::is_same_v<T, DetectionMode>) {
+  if constexpr (kIsChoiceOption<T>) {
     auto* box = new QComboBox;
-    for (DetectionMode mode : kModes) box->addItem(Text(ModeName(mode)));
+    for (T choice : OptionChoices<T>::kValues) box->addItem(Text(OptionChoices<T>::Name(choice)));
     return box;
   } else if constexpr (std::is_integral_v<T>) {
     auto* box = new QSpinBox;
@@ -82,8 +80,9 @@ QWidget* MakeBox(const DetectorOptionField& field, const T& default_value) {
 
 template <typename T>
 void ReadBox(const QWidget* widget, T& value) {
-  if constexpr (std::is_same_v<T, DetectionMode>) {
-    value = kModes[std::max(0, static_cast<const QComboBox*>(widget)->currentIndex())];
+  if constexpr (kIsChoiceOption<T>) {
+    value = OptionChoices<T>::kValues[std::max(
+        0, static_cast<const QComboBox*>(widget)->currentIndex())];
   } else if constexpr (std::is_integral_v<T>) {
     value = static_cast<T>(static_cast<const QSpinBox*>(widget)->value());
   } else {
@@ -93,9 +92,10 @@ void ReadBox(const QWidget* widget, T& value) {
 
 template <typename T>
 void WriteBox(QWidget* widget, const T& value) {
-  if constexpr (std::is_same_v<T, DetectionMode>) {
-    for (int i = 0; i < static_cast<int>(std::size(kModes)); ++i) {
-      if (kModes[i] == value) static_cast<QComboBox*>(widget)->setCurrentIndex(i);
+  if constexpr (kIsChoiceOption<T>) {
+    const auto& choices = OptionChoices<T>::kValues;
+    for (int i = 0; i < static_cast<int>(choices.size()); ++i) {
+      if (choices[i] == value) static_cast<QComboBox*>(widget)->setCurrentIndex(i);
     }
   } else if constexpr (std::is_integral_v<T>) {
     static_cast<QSpinBox*>(widget)->setValue(static_cast<int>(value));
