@@ -38,8 +38,8 @@ void PrintText(const nlohmann::json& json) {
     std::printf("  views: up axis %s, elevation %s, roll %s, %s\n", up.c_str(),
                 views["elevation"].get<std::string>().c_str(),
                 views["roll"].get<std::string>().c_str(), sampling.c_str());
-    std::printf("  %5s %9s %9s %5s %18s %18s %18s\n", "layer", "depth_mm", "templates", "weak",
-                "colour min/avg/max", "normal min/avg/max", "edges min/avg/max");
+    std::printf("  %5s %9s %9s %5s %8s %18s %18s %18s\n", "layer", "depth_mm", "templates", "weak",
+                "clusters", "colour min/avg/max", "normal min/avg/max", "edges min/avg/max");
     for (const auto& layer : object["layers"]) {
       auto triple = [](const nlohmann::json& range) {
         char text[64];
@@ -47,10 +47,14 @@ void PrintText(const nlohmann::json& json) {
                       range["mean"].get<double>(), range["max"].get<int>());
         return std::string(text);
       };
-      std::printf("  %5d %9.1f %9zu %5zu %18s %18s %18s\n", layer["index"].get<int>(),
+      // Layers without a view tree are searched flat.
+      const auto clusters = layer["view_clusters"].get<std::size_t>();
+      const std::string tree = clusters > 0 ? std::to_string(clusters) : "-";
+      std::printf("  %5d %9.1f %9zu %5zu %8s %18s %18s %18s\n", layer["index"].get<int>(),
                   layer["depth_mm"].get<double>(), layer["templates"].get<std::size_t>(),
-                  layer["weak"].get<std::size_t>(), triple(layer["color_features"]).c_str(),
-                  triple(layer["normal_features"]).c_str(), triple(layer["depth_edges"]).c_str());
+                  layer["weak"].get<std::size_t>(), tree.c_str(),
+                  triple(layer["color_features"]).c_str(), triple(layer["normal_features"]).c_str(),
+                  triple(layer["depth_edges"]).c_str());
     }
   }
 }

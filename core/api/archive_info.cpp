@@ -67,13 +67,15 @@ nlohmann::json ObjectJson(const TemplateArchive& archive, const ArchiveObject& o
   for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
     const LayerStats stats = ComputeLayerStats(
         archive.TemplatesOf(object.obj_id, static_cast<int>(layer)), object.layer_depths_mm[layer]);
-    entry["layers"].push_back({{"index", layer},
-                               {"depth_mm", stats.depth_mm},
-                               {"templates", stats.templates},
-                               {"weak", stats.weak},
-                               {"color_features", stats.color_features.ToJson()},
-                               {"normal_features", stats.normal_features.ToJson()},
-                               {"depth_edges", stats.depth_edges.ToJson()}});
+    entry["layers"].push_back(
+        {{"index", layer},
+         {"depth_mm", stats.depth_mm},
+         {"templates", stats.templates},
+         {"weak", stats.weak},
+         {"view_clusters", archive.ViewClustersOf(object.obj_id, static_cast<int>(layer)).size()},
+         {"color_features", stats.color_features.ToJson()},
+         {"normal_features", stats.normal_features.ToJson()},
+         {"depth_edges", stats.depth_edges.ToJson()}});
   }
   return entry;
 }

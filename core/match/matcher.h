@@ -14,8 +14,8 @@
 
 #include "match/scene_level.h"
 #include "match/simd.h"
-#include "match/view_clusters.h"
 #include "templates/template_record.h"
+#include "templates/view_clusters.h"
 
 namespace layermod {
 
@@ -125,7 +125,7 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 // one suppression. Scene-Patch matches each depth layer's templates around the points of its
 // kept blocks this way.
 //
-// With view clusters over `templates` (match/view_clusters.h), the search first scores each
+// With view clusters over `templates` (templates/view_clusters.h), the search first scores each
 // cluster's representative at the top level with a threshold lowered by
 // kRepresentativeMarginPercent, then every member of the best MatchOptions::tree_descend share
 // of the clusters (by their representative's best top-level similarity); the rest as above.

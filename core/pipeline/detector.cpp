@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline/detector.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -87,7 +85,6 @@ void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera
 // so that no template is scored twice.
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const TemplateArchive& archive, const ArchiveObject& object,
-                                      std::span<const std::vector<ViewCluster>> view_clusters,
                                       const ObjectDiagnostics& diagnostics,
                                       const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
@@ -104,10 +101,8 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
   std::vector<TemplateSearch> searches;
   searches.reserve(points_by_layer.size());
   for (const auto& [layer, points] : points_by_layer) {
-    const auto index = static_cast<std::size_t>(layer);
     searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points,
-                        index < view_clusters.size() ? std::span(view_clusters[index])
-                                                     : std::span<const ViewCluster>()});
+                        archive.ViewClustersOf(object.obj_id, layer)});
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
@@ -124,25 +119,6 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
 // pixel spans 1-2 mm, so a few thousand triangles draw the same depth as the full mesh.
 constexpr std::size_t kPoseMeshTriangles = 3000;
 constexpr double kPoseMeshFinestCellMm = 0.5;
-
-// Layers with this many templates or more get view clusters for the tree search: full-sphere
-// layers hold about 6,900, tabletop ones about 1,000 (which the flat search handles as fast).
-constexpr std::size_t kViewTreeTemplates = 2000;
-// Neighbouring views within this angle share a cluster: about ten per cluster at the full
-// preset's 12 degree views and 15 degree rolls.
-constexpr double kViewClusterRadiusDeg = 20.0;
-
-std::vector<std::vector<ViewCluster>> LayerViewClusters(const TemplateArchive& archive,
-                                                        const ArchiveObject& object) {
-  std::vector<std::vector<ViewCluster>> clusters(object.layer_depths_mm.size());
-  tbb::parallel_for(std::size_t{0}, clusters.size(), [&](std::size_t layer) {
-    const auto templates = archive.TemplatesOf(object.obj_id, static_cast<int>(layer));
-    if (templates.size() >= kViewTreeTemplates) {
-      clusters[layer] = ClusterViews(templates, kViewClusterRadiusDeg);
-    }
-  });
-  return clusters;
-}
 
 // The largest level-0 template box of the object.
 cv::Size LargestTemplate(const TemplateArchive& archive, const ArchiveObject& object) {
@@ -248,8 +224,7 @@ void Detector::IndexObjects() {
       }
       objects_.push_back(
           {a, object.obj_id, EdgeRanges(archive, object), LargestTemplate(archive, object),
-           SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm),
-           LayerViewClusters(archive, object)});
+           SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm)});
     }
   }
 }
@@ -336,8 +311,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     if (prepared.region_px.empty()) {
       // nothing survived coarse positioning: no match
     } else if (scene_patch) {
-      diagnostics.matches =
-          MatchKeptBlocks(prepared, archive, object, entry.view_clusters, diagnostics, options);
+      diagnostics.matches = MatchKeptBlocks(prepared, archive, object, diagnostics, options);
     } else {
       diagnostics.matches =
           MatchTemplates(prepared.scene, archive.TemplatesOf(object.obj_id), options.match);

@@ -9,7 +9,6 @@
 
 #include "geometry/camera.h"
 #include "match/matcher.h"
-#include "match/view_clusters.h"
 #include "pose/icp.h"
 #include "pose/verification.h"
 #include "scene/coarse_positioning.h"
@@ -119,9 +118,6 @@ class Detector {
     std::vector<LayerEdgeRange> edge_ranges;  // per layer
     cv::Size largest_template;                // level-0 px, over all its templates
     RenderMesh pose_mesh;                     // the mesh ICP and verification render
-    // Per layer: view clusters for the tree search, for layers of at least kViewTreeTemplates
-    // templates (empty otherwise: those are searched flat).
-    std::vector<std::vector<ViewCluster>> view_clusters;
   };
 
   void IndexObjects();  // fills objects_ from archives_; throws Error for inconsistent archives

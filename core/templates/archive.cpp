@@ -36,6 +36,40 @@ void CheckIdsAndObjects(const ArchiveManifest& manifest,
 TemplateArchive::TemplateArchive(ArchiveManifest manifest, std::vector<TemplateRecord> templates)
     : manifest_(std::move(manifest)), templates_(std::move(templates)) {
   BuildIndex();
+  for (Range& range : index_) {
+    if (range.layer_index < 0 || range.end - range.begin < kViewTreeTemplates) continue;
+    range.clusters = ClusterViews(
+        std::span(templates_).subspan(range.begin, range.end - range.begin), kViewClusterRadiusDeg);
+  }
+}
+
+TemplateArchive::TemplateArchive(ArchiveManifest manifest, std::vector<TemplateRecord> templates,
+                                 std::span<const std::uint32_t> view_leaders,
+                                 double view_cluster_radius_deg)
+    : manifest_(std::move(manifest)), templates_(std::move(templates)) {
+  BuildIndex();
+  if (view_leaders.size() != templates_.size()) {
+    throw FormatError("view tree: " + std::to_string(view_leaders.size()) + " entries for " +
+                      std::to_string(templates_.size()) + " templates");
+  }
+  for (Range& range : index_) {
+    if (range.layer_index < 0) continue;
+    const std::size_t size = range.end - range.begin;
+    std::vector<std::uint32_t> leaders(
+        view_leaders.begin() + static_cast<std::ptrdiff_t>(range.begin),
+        view_leaders.begin() + static_cast<std::ptrdiff_t>(range.end));
+    for (std::size_t i = 0; i < size; ++i) {
+      if (leaders[i] == kNoViewCluster) continue;
+      if (leaders[i] < range.begin || leaders[i] >= range.end) {
+        throw FormatError("view tree: template " + std::to_string(range.begin + i) +
+                          " is led by template " + std::to_string(leaders[i]) +
+                          ", which is not of its object and layer");
+      }
+      leaders[i] -= static_cast<std::uint32_t>(range.begin);
+    }
+    range.clusters = ClustersFromLeaders(std::span(templates_).subspan(range.begin, size), leaders,
+                                         view_cluster_radius_deg);
+  }
 }
 
 void TemplateArchive::BuildIndex() {
@@ -58,13 +92,13 @@ void TemplateArchive::BuildIndex() {
       throw FormatError("templates of " + RunName(first.obj_id, first.layer_index) +
                         " are not contiguous");
     }
-    index_.push_back({first.obj_id, first.layer_index, begin, i});
+    index_.push_back({first.obj_id, first.layer_index, begin, i, {}});
     if (at_end || templates_[i].obj_id != first.obj_id) {
       if (!closed_objects.insert(first.obj_id).second) {
         throw FormatError("templates of object " + std::to_string(first.obj_id) +
                           " are not contiguous");
       }
-      index_.push_back({first.obj_id, -1, object_begin, i});
+      index_.push_back({first.obj_id, -1, object_begin, i, {}});
       object_begin = i;
     }
     begin = i;
@@ -85,14 +119,49 @@ std::span<const TemplateRecord> TemplateArchive::TemplatesOf(std::int32_t obj_id
   return TemplatesOf(obj_id, -1);
 }
 
-std::span<const TemplateRecord> TemplateArchive::TemplatesOf(std::int32_t obj_id,
-                                                             int layer_index) const {
+const TemplateArchive::Range* TemplateArchive::FindRange(std::int32_t obj_id,
+                                                         int layer_index) const {
   const auto it = std::lower_bound(index_.begin(), index_.end(), std::pair(obj_id, layer_index),
                                    [](const Range& range, const std::pair<std::int32_t, int>& key) {
                                      return std::pair(range.obj_id, range.layer_index) < key;
                                    });
-  if (it == index_.end() || it->obj_id != obj_id || it->layer_index != layer_index) return {};
-  return std::span<const TemplateRecord>(templates_).subspan(it->begin, it->end - it->begin);
+  if (it == index_.end() || it->obj_id != obj_id || it->layer_index != layer_index) return nullptr;
+  return &*it;
+}
+
+std::span<const TemplateRecord> TemplateArchive::TemplatesOf(std::int32_t obj_id,
+                                                             int layer_index) const {
+  const Range* range = FindRange(obj_id, layer_index);
+  if (range == nullptr) return {};
+  return std::span<const TemplateRecord>(templates_)
+      .subspan(range->begin, range->end - range->begin);
+}
+
+std::span<const ViewCluster> TemplateArchive::ViewClustersOf(std::int32_t obj_id,
+                                                             int layer_index) const {
+  const Range* range = layer_index < 0 ? nullptr : FindRange(obj_id, layer_index);
+  if (range == nullptr) return {};
+  return range->clusters;
+}
+
+std::size_t TemplateArchive::ViewClusterCount() const {
+  std::size_t count = 0;
+  for (const Range& range : index_) count += range.clusters.size();
+  return count;
+}
+
+std::vector<std::uint32_t> TemplateArchive::ViewLeaders() const {
+  std::vector<std::uint32_t> leaders(templates_.size(), kNoViewCluster);
+  for (const Range& range : index_) {
+    const std::vector<std::uint32_t> layer =
+        ClusterLeaders(range.clusters, range.end - range.begin);
+    for (std::size_t i = 0; i < layer.size(); ++i) {
+      if (layer[i] != kNoViewCluster) {
+        leaders[range.begin + i] = layer[i] + static_cast<std::uint32_t>(range.begin);
+      }
+    }
+  }
+  return leaders;
 }
 
 }  // namespace layermod

@@ -12,10 +12,14 @@
 #include "mesh/render_mesh.h"
 #include "templates/template_record.h"
 #include "templates/training_profile.h"
+#include "templates/view_clusters.h"
 
 namespace layermod {
 
-inline constexpr int kArchiveFormatVersion = 1;
+// Version 2 added the view tree (view_tree.bin); version 1 archives still load, their tree is
+// built when they are read.
+inline constexpr int kArchiveFormatVersion = 2;
+inline constexpr int kOldestArchiveFormatVersion = 1;
 
 // One object of an archive.
 struct ArchiveObject {
@@ -47,7 +51,13 @@ struct ArchiveManifest {
 class TemplateArchive {
  public:
   TemplateArchive() = default;
+  // Builds the view tree: the views of every layer of at least kViewTreeTemplates templates are
+  // clustered (templates/view_clusters.h).
   TemplateArchive(ArchiveManifest manifest, std::vector<TemplateRecord> templates);
+  // With a stored view tree: one leader (a template id, or kNoViewCluster) per template, as
+  // ViewLeaders() gives it. Throws FormatError when the tree does not fit the templates.
+  TemplateArchive(ArchiveManifest manifest, std::vector<TemplateRecord> templates,
+                  std::span<const std::uint32_t> view_leaders, double view_cluster_radius_deg);
 
   const ArchiveManifest& manifest() const { return manifest_; }
   const std::vector<TemplateRecord>& templates() const { return templates_; }
@@ -57,17 +67,28 @@ class TemplateArchive {
   std::span<const TemplateRecord> TemplatesOf(std::int32_t obj_id) const;
   std::span<const TemplateRecord> TemplatesOf(std::int32_t obj_id, int layer_index) const;
 
- private:
-  void BuildIndex();  // throws FormatError if records are not grouped by object and layer
+  // The view clusters of a layer, as indices into TemplatesOf(obj_id, layer_index); empty for
+  // layers without a view tree (searched flat).
+  std::span<const ViewCluster> ViewClustersOf(std::int32_t obj_id, int layer_index) const;
+  std::size_t ViewClusterCount() const;  // over all layers
+  // The view tree as the archive file stores it: for each template the id of its cluster's
+  // representative, kNoViewCluster for templates in no cluster.
+  std::vector<std::uint32_t> ViewLeaders() const;
 
-  ArchiveManifest manifest_;
-  std::vector<TemplateRecord> templates_;
+ private:
   struct Range {
     std::int32_t obj_id;
     int layer_index;  // -1: the whole object
     std::size_t begin;
     std::size_t end;
+    std::vector<ViewCluster> clusters;  // layers only
   };
+
+  void BuildIndex();  // throws FormatError if records are not grouped by object and layer
+  const Range* FindRange(std::int32_t obj_id, int layer_index) const;  // nullptr: none
+
+  ArchiveManifest manifest_;
+  std::vector<TemplateRecord> templates_;
   std::vector<Range> index_;
 };
 

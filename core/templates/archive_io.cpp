@@ -13,6 +13,8 @@
 //                  the offset/count of its features in features.bin)
 //   features.bin   deflated; 6-byte little-endian features (x i16, y i16, label u8,
 //                  modality u8), template after template, level after level
+//   view_tree.bin  deflated; the view tree: one u32 per template, in id order, the id of its
+//                  view cluster's representative or 0xFFFFFFFF (no cluster); since version 2
 //   mesh_<id>.bin  deflated; each object's model (positions and colours as f32, triangles as
 //                  u32), for pose refinement and verification
 // Every number is written byte by byte (floats through their bit patterns), never by copying
@@ -32,6 +34,7 @@
 #include "templates/archive_manifest.h"
 #include "templates/archive_meshes.h"
 #include "templates/archive_tables.h"
+#include "templates/byte_io.h"
 #include "templates/zip_container.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
@@ -54,6 +57,14 @@ std::string Printable(std::string_view text) {
 }
 
 // ---- writing ----
+
+std::string EncodeViewLeaders(const std::vector<std::uint32_t>& leaders) {
+  std::string bytes;
+  bytes.reserve(leaders.size() * kViewLeaderRecordBytes);
+  ByteWriter writer(bytes);
+  for (std::uint32_t leader : leaders) writer.Put(leader);
+  return bytes;
+}
 
 std::vector<MeshInfo> EncodeMeshes(const ArchiveManifest& manifest,
                                    std::vector<ZipEntry>& entries) {
@@ -78,10 +89,14 @@ std::string EncodeArchive(const TemplateArchive& archive) {
       DescribeTable("templates.bin", kTemplateRecordBytes, tables.templates);
   const TableInfo feature_table =
       DescribeTable("features.bin", kFeatureRecordBytes, tables.features);
+  std::string view_tree_bin = EncodeViewLeaders(archive.ViewLeaders());
+  const ViewTreeInfo view_tree = {
+      DescribeTable("view_tree.bin", kViewLeaderRecordBytes, view_tree_bin), kViewClusterRadiusDeg,
+      archive.ViewClusterCount()};
   std::vector<ZipEntry> mesh_entries;
   const std::vector<MeshInfo> meshes = EncodeMeshes(manifest, mesh_entries);
-  const nlohmann::json manifest_json =
-      ManifestToJson(manifest, archive.templates(), template_table, feature_table, meshes);
+  const nlohmann::json manifest_json = ManifestToJson(manifest, archive.templates(), template_table,
+                                                      feature_table, view_tree, meshes);
   std::vector<ZipEntry> entries;
   entries.push_back({"mimetype", std::string(kMimeType), /*compress=*/false});
   entries.push_back(
@@ -89,6 +104,7 @@ std::string EncodeArchive(const TemplateArchive& archive) {
        manifest_json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n", true});
   entries.push_back({template_table.entry, std::move(tables.templates), true});
   entries.push_back({feature_table.entry, std::move(tables.features), true});
+  entries.push_back({view_tree.table.entry, std::move(view_tree_bin), true});
   for (ZipEntry& entry : mesh_entries) entries.push_back(std::move(entry));
   return WriteZip(entries);
 }
@@ -161,6 +177,13 @@ RenderMesh ReadMesh(const ZipReader& zip, const MeshInfo& mesh) {
   return DecodeMesh(zip.Read(*index, mesh.byte_size), mesh);
 }
 
+std::vector<std::uint32_t> DecodeViewLeaders(std::string_view bytes) {
+  std::vector<std::uint32_t> leaders(bytes.size() / kViewLeaderRecordBytes);
+  ByteReader reader(bytes);
+  for (std::uint32_t& leader : leaders) leader = reader.Get<std::uint32_t>();
+  return leaders;
+}
+
 TemplateArchive DecodeArchive(std::string_view bytes) {
   if (bytes.empty()) throw FormatError("empty file, not a LayerMOD archive");
   if (!bytes.starts_with(kZipSignature)) {
@@ -169,8 +192,10 @@ TemplateArchive DecodeArchive(std::string_view bytes) {
   const ZipReader zip(bytes);
   CheckMimetype(zip);
   ParsedManifest parsed = ReadManifest(zip);
-  if (parsed.template_table.entry == parsed.feature_table.entry) {
-    throw FormatError("the template and feature tables share one entry");
+  if (parsed.template_table.entry == parsed.feature_table.entry ||
+      (parsed.view_tree && (parsed.view_tree->table.entry == parsed.template_table.entry ||
+                            parsed.view_tree->table.entry == parsed.feature_table.entry))) {
+    throw FormatError("two tables share one entry");
   }
   std::vector<TemplateRecord> templates;
   {
@@ -184,7 +209,20 @@ TemplateArchive DecodeArchive(std::string_view bytes) {
   if (parsed.counts != CountsJson(parsed.manifest, templates)) {
     throw FormatError("manifest counts do not match the template table");
   }
-  return TemplateArchive(std::move(parsed.manifest), std::move(templates));
+  if (!parsed.view_tree) {
+    // Version 1: no stored tree, so it is built now, as training builds it.
+    return TemplateArchive(std::move(parsed.manifest), std::move(templates));
+  }
+  const ViewTreeInfo& view_tree = *parsed.view_tree;
+  const std::vector<std::uint32_t> leaders =
+      DecodeViewLeaders(ReadTable(zip, view_tree.table, kViewLeaderRecordBytes));
+  TemplateArchive archive(std::move(parsed.manifest), std::move(templates), leaders,
+                          view_tree.radius_deg);
+  if (archive.ViewClusterCount() != view_tree.clusters) {
+    throw FormatError("view tree: the manifest counts " + std::to_string(view_tree.clusters) +
+                      " clusters, the table holds " + std::to_string(archive.ViewClusterCount()));
+  }
+  return archive;
 }
 
 }  // namespace

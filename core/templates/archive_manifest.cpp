@@ -129,6 +129,18 @@ TableInfo ReadTable(const JsonFields& fields) {
   return table;
 }
 
+ViewTreeInfo ReadViewTree(const JsonFields& fields, const JsonFields& tables) {
+  ViewTreeInfo view_tree;
+  const JsonFields tree = fields.Object("view_tree");
+  view_tree.radius_deg = tree.Number("radius_deg");
+  if (!(view_tree.radius_deg > 0.0 && view_tree.radius_deg <= 180.0)) {
+    tree.Fail("radius_deg", "must lie in (0, 180]");
+  }
+  view_tree.clusters = tree.Unsigned("clusters");
+  view_tree.table = ReadTable(tables.Object("view_tree"));
+  return view_tree;
+}
+
 void ValidateObject(const ArchiveObject& object) {
   const std::string what = "object " + std::to_string(object.obj_id) + ": ";
   try {
@@ -201,7 +213,7 @@ nlohmann::json CountsJson(const ArchiveManifest& manifest,
 nlohmann::json ManifestToJson(const ArchiveManifest& manifest,
                               std::span<const TemplateRecord> templates,
                               const TableInfo& template_table, const TableInfo& feature_table,
-                              std::span<const MeshInfo> meshes) {
+                              const ViewTreeInfo& view_tree, std::span<const MeshInfo> meshes) {
   if (meshes.size() != manifest.objects.size()) throw Error("one mesh per object expected");
   nlohmann::json objects = nlohmann::json::array();
   for (std::size_t i = 0; i < meshes.size(); ++i) {
@@ -214,8 +226,11 @@ nlohmann::json ManifestToJson(const ArchiveManifest& manifest,
           {"camera", CameraJson(manifest.camera)},
           {"objects", objects},
           {"counts", CountsJson(manifest, templates)},
+          {"view_tree", {{"radius_deg", view_tree.radius_deg}, {"clusters", view_tree.clusters}}},
           {"tables",
-           {{"templates", TableJson(template_table)}, {"features", TableJson(feature_table)}}}};
+           {{"templates", TableJson(template_table)},
+            {"features", TableJson(feature_table)},
+            {"view_tree", TableJson(view_tree.table)}}}};
 }
 
 ParsedManifest ManifestFromJson(const nlohmann::json& json) {
@@ -223,15 +238,17 @@ ParsedManifest ManifestFromJson(const nlohmann::json& json) {
   // The version decides how to read the rest, so it is checked before anything else.
   const nlohmann::json& version = fields.Get("format_version");
   if (!version.is_number_integer()) fields.Fail("format_version", "must be an integer");
-  if (version != nlohmann::json(kArchiveFormatVersion)) {
+  if (version < kOldestArchiveFormatVersion || version > kArchiveFormatVersion) {
     throw FormatError("format version " + version.dump() + ", this tool reads " +
+                      std::to_string(kOldestArchiveFormatVersion) + " to " +
                       std::to_string(kArchiveFormatVersion));
   }
   if (fields.String("endianness") != "little") {
     fields.Fail("endianness", "must be \"little\"");
   }
   ParsedManifest parsed;
-  parsed.manifest.format_version = kArchiveFormatVersion;
+  parsed.format_version = version.get<int>();
+  parsed.manifest.format_version = parsed.format_version;
   parsed.manifest.tool_version = fields.String("tool_version");
   parsed.manifest.created_utc = fields.String("created_utc");
   parsed.manifest.camera = ReadCamera(fields.Object("camera"));
@@ -244,6 +261,7 @@ ParsedManifest ManifestFromJson(const nlohmann::json& json) {
   const JsonFields tables = fields.Object("tables");
   parsed.template_table = ReadTable(tables.Object("templates"));
   parsed.feature_table = ReadTable(tables.Object("features"));
+  if (parsed.format_version >= 2) parsed.view_tree = ReadViewTree(fields, tables);
   fields.Object("counts");  // must be an object; compared with the tables by the reader
   parsed.counts = fields.Get("counts");
   return parsed;

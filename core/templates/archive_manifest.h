@@ -4,8 +4,10 @@
 // The readable manifest.json of a *.layermod archive (fields in docs/archive-format.md).
 // Internal to the archive reader/writer; tests use it to build corrupt archives.
 
+#include <cstddef>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -26,6 +28,17 @@ struct TableInfo {
   bool operator==(const TableInfo&) const = default;
 };
 
+// The view tree's table (one leader per template, templates/view_clusters.h) and the radius its
+// clusters were built with.
+inline constexpr std::size_t kViewLeaderRecordBytes = 4;
+struct ViewTreeInfo {
+  TableInfo table;
+  double radius_deg = 0.0;
+  std::uint64_t clusters = 0;
+
+  bool operator==(const ViewTreeInfo&) const = default;
+};
+
 TableInfo DescribeTable(std::string entry, std::uint64_t record_size, std::string_view bytes);
 std::uint32_t Crc32(std::string_view bytes);
 
@@ -37,17 +50,20 @@ nlohmann::json CountsJson(const ArchiveManifest& manifest,
 nlohmann::json ManifestToJson(const ArchiveManifest& manifest,
                               std::span<const TemplateRecord> templates,
                               const TableInfo& template_table, const TableInfo& feature_table,
-                              std::span<const MeshInfo> meshes);
+                              const ViewTreeInfo& view_tree, std::span<const MeshInfo> meshes);
 
 struct ParsedManifest {
   ArchiveManifest manifest;  // objects without their meshes (those are in separate entries)
+  int format_version = kArchiveFormatVersion;
   TableInfo template_table;
   TableInfo feature_table;
-  std::vector<MeshInfo> meshes;  // one per object
+  std::optional<ViewTreeInfo> view_tree;  // absent in version 1
+  std::vector<MeshInfo> meshes;           // one per object
   nlohmann::json counts;
 };
 
-// Checks the format version first, then every field. Throws FormatError naming the field
+// Checks the format version first (kOldestArchiveFormatVersion..kArchiveFormatVersion), then
+// every field. Throws FormatError naming the field
 // (no file name).
 ParsedManifest ManifestFromJson(const nlohmann::json& json);
 

@@ -56,7 +56,8 @@ TEST(ArchiveInfoTest, CountsTemplatesAndFeatureRangesPerLayer) {
   const nlohmann::json& near = object["layers"][0];
   EXPECT_EQ(near["depth_mm"], 600.0);
   EXPECT_EQ(near["templates"], 3);
-  EXPECT_EQ(near["weak"], 1);  // left out of the ranges
+  EXPECT_EQ(near["weak"], 1);           // left out of the ranges
+  EXPECT_EQ(near["view_clusters"], 0);  // too few templates for a view tree
   EXPECT_EQ(near["color_features"], (nlohmann::json{{"min", 10}, {"mean", 20.0}, {"max", 30}}));
   EXPECT_EQ(near["normal_features"], (nlohmann::json{{"min", 20}, {"mean", 30.0}, {"max", 40}}));
   EXPECT_EQ(near["depth_edges"], (nlohmann::json{{"min", 100}, {"mean", 200.0}, {"max", 300}}));

@@ -144,18 +144,23 @@ std::string PackUnchecked(const ArchiveManifest& manifest,
       DescribeTable("templates.bin", kTemplateRecordBytes, tables.templates);
   const TableInfo feature_table =
       DescribeTable("features.bin", kFeatureRecordBytes, tables.features);
+  // No layer is clustered: one "no cluster" leader per template.
+  std::string view_tree_bin(templates.size() * kViewLeaderRecordBytes, '\xff');
+  const ViewTreeInfo view_tree = {
+      DescribeTable("view_tree.bin", kViewLeaderRecordBytes, view_tree_bin), 20.0, 0};
   std::vector<MeshInfo> meshes;
   std::vector<ZipEntry> entries = {{"mimetype", "application/x-layermod", false},
                                    {"manifest.json", "", true},
                                    {"templates.bin", std::move(tables.templates), true},
-                                   {"features.bin", std::move(tables.features), true}};
+                                   {"features.bin", std::move(tables.features), true},
+                                   {"view_tree.bin", std::move(view_tree_bin), true}};
   for (const ArchiveObject& object : manifest.objects) {
     std::string bytes = EncodeMesh(object.mesh);
     meshes.push_back(DescribeMesh(MeshEntryName(object.obj_id), object.mesh, bytes));
     entries.push_back({meshes.back().entry, std::move(bytes), true});
   }
   entries[1].data =
-      ManifestToJson(manifest, templates, template_table, feature_table, meshes).dump(2);
+      ManifestToJson(manifest, templates, template_table, feature_table, view_tree, meshes).dump(2);
   return WriteZip(entries);
 }
 
@@ -165,10 +170,12 @@ UnpackedArchive Unpack(std::string_view bytes) {
   archive.manifest = nlohmann::json::parse(zip.Read(zip.Find("manifest.json").value(), 1 << 24));
   archive.templates_bin = zip.Read(zip.Find("templates.bin").value(), 1ull << 32);
   archive.features_bin = zip.Read(zip.Find("features.bin").value(), 1ull << 32);
+  if (const auto tree = zip.Find("view_tree.bin"))
+    archive.view_tree_bin = zip.Read(*tree, 1ull << 32);
   for (std::size_t i = 0; i < zip.EntryCount(); ++i) {
     const std::string& name = zip.Entry(i).name;
     if (name == "mimetype" || name == "manifest.json" || name == "templates.bin" ||
-        name == "features.bin") {
+        name == "features.bin" || name == "view_tree.bin") {
       continue;
     }
     archive.others.push_back({name, zip.Read(i, 1ull << 32), true});
@@ -188,11 +195,18 @@ std::string Repack(UnpackedArchive archive, bool fix_tables) {
     describe("templates",
              DescribeTable("templates.bin", kTemplateRecordBytes, archive.templates_bin));
     describe("features", DescribeTable("features.bin", kFeatureRecordBytes, archive.features_bin));
+    if (archive.manifest["tables"].contains("view_tree") && !archive.view_tree_bin.empty()) {
+      describe("view_tree",
+               DescribeTable("view_tree.bin", kViewLeaderRecordBytes, archive.view_tree_bin));
+    }
   }
   std::vector<ZipEntry> entries = {{"mimetype", "application/x-layermod", false},
                                    {"manifest.json", archive.manifest.dump(2), true},
                                    {"templates.bin", std::move(archive.templates_bin), true},
                                    {"features.bin", std::move(archive.features_bin), true}};
+  if (!archive.view_tree_bin.empty()) {
+    entries.push_back({"view_tree.bin", std::move(archive.view_tree_bin), true});
+  }
   for (ZipEntry& entry : archive.others) entries.push_back(std::move(entry));
   return WriteZip(entries);
 }
@@ -253,6 +267,7 @@ void ExpectSameArchive(const TemplateArchive& actual, const TemplateArchive& exp
   for (std::size_t i = 0; i < actual.templates().size(); ++i) {
     ExpectSameRecord(actual.templates()[i], expected.templates()[i]);
   }
+  EXPECT_EQ(actual.ViewLeaders(), expected.ViewLeaders());
 }
 
 void ExpectRejected(std::string_view bytes, std::string_view phrase) {

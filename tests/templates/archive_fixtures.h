@@ -44,6 +44,7 @@ struct UnpackedArchive {
   nlohmann::json manifest;
   std::string templates_bin;
   std::string features_bin;
+  std::string view_tree_bin;     // empty: no view_tree.bin entry (version 1)
   std::vector<ZipEntry> others;  // the mesh entries, in container order
 };
 UnpackedArchive Unpack(std::string_view bytes);

@@ -78,7 +78,7 @@ TEST(ArchiveIoTest, ManifestIsReadableJsonWithCounts) {
   const std::string bytes = ReadFileBytes(dir / "a.layermod");
   const test::UnpackedArchive unpacked = test::Unpack(bytes);
   const nlohmann::json& manifest = unpacked.manifest;
-  EXPECT_EQ(manifest["format_version"], 1);
+  EXPECT_EQ(manifest["format_version"], kArchiveFormatVersion);
   EXPECT_EQ(manifest["endianness"], "little");
   EXPECT_EQ(manifest["camera"]["width"], 640);
   EXPECT_EQ(manifest["objects"][1]["obj_id"], 7);

@@ -35,8 +35,9 @@ TEST(ArchiveManifestTest, JsonRoundTripKeepsTheManifest) {
   const TableInfo templates{"templates.bin", kTemplateRecordBytes, 20, 20 * 264, 0xDEADBEEFu};
   const TableInfo features{"features.bin", kFeatureRecordBytes, 10, 60, 7u};
   const std::vector<MeshInfo> meshes = {{"mesh_3.bin", 8, 12, 336, 1u}, {"m7", 0, 0, 0, 2u}};
-  const nlohmann::json json =
-      ManifestToJson(archive.manifest(), archive.templates(), templates, features, meshes);
+  const ViewTreeInfo view_tree = {{"view_tree.bin", kViewLeaderRecordBytes, 20, 80, 9u}, 17.5, 3};
+  const nlohmann::json json = ManifestToJson(archive.manifest(), archive.templates(), templates,
+                                             features, view_tree, meshes);
   const ParsedManifest parsed = ManifestFromJson(nlohmann::json::parse(json.dump()));
   ArchiveManifest without_meshes = archive.manifest();
   for (ArchiveObject& object : without_meshes.objects) object.mesh = RenderMesh();
@@ -44,9 +45,10 @@ TEST(ArchiveManifestTest, JsonRoundTripKeepsTheManifest) {
   EXPECT_EQ(parsed.template_table, templates);
   EXPECT_EQ(parsed.feature_table, features);
   EXPECT_EQ(parsed.meshes, meshes);
+  EXPECT_EQ(parsed.view_tree, view_tree);
   EXPECT_EQ(parsed.counts, CountsJson(archive.manifest(), archive.templates()));
   EXPECT_THROW(ManifestToJson(archive.manifest(), archive.templates(), templates, features,
-                              std::span(meshes).first(1)),
+                              view_tree, std::span(meshes).first(1)),
                Error);
 }
 
@@ -55,15 +57,17 @@ TEST(ArchiveManifestTest, UnmodifiedManifestIsAccepted) {
 }
 
 TEST(ArchiveManifestTest, OtherFormatVersionsAreRejectedFirst) {
-  test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = 2; }),
-                       "format version 2, this tool reads 1");
+  test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = 3; }),
+                       "format version 3, this tool reads 1 to 2");
+  test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = 0; }),
+                       "format version 0, this tool reads 1 to 2");
   // A future version may change anything else: the version error must come first.
   test::ExpectRejected(WithManifest([](nlohmann::json& m) {
                          m["format_version"] = 7;
                          m.erase("camera");
                          m["objects"] = "changed";
                        }),
-                       "format version 7, this tool reads 1");
+                       "format version 7, this tool reads 1 to 2");
   test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = -1; }),
                        "format version -1");
   test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = "1"; }),

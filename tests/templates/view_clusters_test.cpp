@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "match/view_clusters.h"
+#include "templates/view_clusters.h"
 
 #include <gtest/gtest.h>
 
