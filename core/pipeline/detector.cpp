@@ -115,6 +115,20 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
   return matches;
 }
 
+// Exhaustive and colour-only invocation: every layer's templates over the whole image, through
+// the layer's view tree where it has one (as MatchTemplates over all of them otherwise).
+std::vector<RawMatch> MatchEveryLayer(const PreparedRegion& prepared,
+                                      const TemplateArchive& archive, const ArchiveObject& object,
+                                      const DetectorOptions& options) {
+  std::vector<TemplateSearch> searches;
+  for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
+    const int index = static_cast<int>(layer);
+    searches.push_back({archive.TemplatesOf(object.obj_id, index), nullptr,
+                        archive.ViewClustersOf(object.obj_id, index)});
+  }
+  return MatchTemplateGroups(prepared.scene, searches, options.match);
+}
+
 // ICP and verification render the object up to 32 times per frame; at working distance a
 // pixel spans 1-2 mm, so a few thousand triangles draw the same depth as the full mesh.
 constexpr std::size_t kPoseMeshTriangles = 3000;
@@ -313,8 +327,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     } else if (scene_patch) {
       diagnostics.matches = MatchKeptBlocks(prepared, archive, object, diagnostics, options);
     } else {
-      diagnostics.matches =
-          MatchTemplates(prepared.scene, archive.TemplatesOf(object.obj_id), options.match);
+      diagnostics.matches = MatchEveryLayer(prepared, archive, object, options);
     }
     result.timings.match_ms += MsSince(stage_start);
 
