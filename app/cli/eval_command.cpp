@@ -39,6 +39,7 @@ void RunEval(const EvalArgs& args) {
               evaluation.summary.mean_object_accuracy_percent, evaluation.summary.median_frame_ms,
               evaluation.summary.p90_frame_ms);
   std::printf("%s", ConfidenceText(evaluation.summary).c_str());
+  std::printf("%s", MissesText(evaluation.summary).c_str());
   std::printf("%s", EnvelopeCoverageText(evaluation.summary, evaluation.run).c_str());
   std::printf("report        %s\n", (fs::path(args.out) / "report.md").string().c_str());
 }

@@ -41,6 +41,12 @@ nlohmann::json ObjectJson(const ObjectSummary& object) {
           {"outside_envelope", object.outside_envelope},
           {"absent", object.absent},
           {"absent_detected", object.absent_detected},
+          {"misses",
+           {{"outside_envelope", object.missed_outside_envelope},
+            {"undetected", object.missed_undetected},
+            {"wrong_pose", object.missed_wrong_pose},
+            {"wrong_pose_accepted", object.wrong_pose_accepted},
+            {"right_below_threshold", object.missed_below_threshold}}},
           {"accuracy_percent", object.AccuracyPercent()},
           {"precision_percent", object.PrecisionPercent()},
           {"absent_detected_percent", object.AbsentDetectedPercent()},
@@ -184,6 +190,39 @@ std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& 
   return text;
 }
 
+std::string MissesText(const MethodSummary& summary) {
+  const ObjectSummary& all = summary.overall;
+  const int missed = all.frames - all.correct;
+  if (missed <= 0) return "";
+  return "Targets missed: " + std::to_string(missed) + " of " + std::to_string(all.frames) + ": " +
+         std::to_string(all.missed_outside_envelope) + " outside the envelope, " +
+         std::to_string(all.missed_undetected) + " not detected, " +
+         std::to_string(all.missed_wrong_pose) + " with a wrong pose (" +
+         std::to_string(all.wrong_pose_accepted) + " of them accepted), " +
+         std::to_string(all.missed_below_threshold) +
+         " with a right pose below the confidence threshold.\n";
+}
+
+std::string MissesTable(const MethodSummary& summary) {
+  std::string table =
+      "| Object | Targets | Right | Outside envelope | Not detected | Wrong pose (accepted) | "
+      "Right, below threshold |\n|---|---:|---:|---:|---:|---:|---:|\n";
+  const auto row = [&](const std::string& label, const ObjectSummary& object) {
+    table += "| " + label + " | " + std::to_string(object.frames) + " | " +
+             std::to_string(object.correct) + " | " +
+             std::to_string(object.missed_outside_envelope) + " | " +
+             std::to_string(object.missed_undetected) + " | " +
+             std::to_string(object.missed_wrong_pose) + " (" +
+             std::to_string(object.wrong_pose_accepted) + ") | " +
+             std::to_string(object.missed_below_threshold) + " |\n";
+  };
+  for (const ObjectSummary& object : summary.objects) {
+    if (object.frames > 0) row(std::to_string(object.obj_id), object);
+  }
+  row("all", summary.overall);
+  return table;
+}
+
 std::string ConfidenceText(const MethodSummary& summary) {
   const ObjectSummary& all = summary.overall;
   std::string text = "Detections accepted at confidence >= " + Fixed(summary.min_confidence, 2) +
@@ -223,6 +262,9 @@ std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& sum
           Fixed(summary.median_frame_ms, 1) + " ms, p90 " + Fixed(summary.p90_frame_ms, 1) +
           " ms.\n";
   text += "\n" + ConfidenceText(summary);
+  if (const std::string misses = MissesText(summary); !misses.empty()) {
+    text += "\n" + misses + "\n" + MissesTable(summary);
+  }
   const std::string coverage = EnvelopeCoverageText(summary, run);
   if (!coverage.empty()) text += "\n" + coverage;
   return text;

@@ -57,6 +57,12 @@ void CheckReportFolder(const std::filesystem::path& out_dir);
 // under the precision-recall curve.
 std::string ConfidenceText(const MethodSummary& summary);
 
+// "Targets missed: N of M: a outside the envelope, b not detected, c with a wrong pose (d of them
+// accepted), e with a right pose below the confidence threshold.", empty when none was missed;
+// and the same per object as a markdown table.
+std::string MissesText(const MethodSummary& summary);
+std::string MissesTable(const MethodSummary& summary);
+
 // Creates `out_dir` if needed and writes report.json, report.md and pr_curve.png atomically. Throws
 // IoError.
 void WriteEvalReport(const std::filesystem::path& out_dir, const EvalRunInfo& info,

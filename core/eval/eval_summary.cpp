@@ -13,6 +13,22 @@ double Mean(const std::vector<double>& values) {
   return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
 }
 
+// The cause of a target's miss (ObjectSummary), nothing for a correct accepted detection.
+void CountMiss(const TargetOutcome& outcome, double min_confidence, ObjectSummary& summary) {
+  const bool accepted = Accepted(outcome, min_confidence);
+  if (accepted && outcome.pose.correct) return;
+  if (outcome.outside_envelope) {
+    ++summary.missed_outside_envelope;
+  } else if (!outcome.detected) {
+    ++summary.missed_undetected;
+  } else if (!outcome.pose.correct) {
+    ++summary.missed_wrong_pose;
+    summary.wrong_pose_accepted += accepted ? 1 : 0;
+  } else {
+    ++summary.missed_below_threshold;
+  }
+}
+
 ObjectSummary SummarizeOutcomes(const std::vector<const TargetOutcome*>& outcomes,
                                 double min_confidence) {
   ObjectSummary summary;
@@ -26,6 +42,7 @@ ObjectSummary SummarizeOutcomes(const std::vector<const TargetOutcome*>& outcome
     ++summary.frames;
     times_ms.push_back(outcome->frame_time_ms);
     summary.outside_envelope += outcome->outside_envelope ? 1 : 0;
+    CountMiss(*outcome, min_confidence, summary);
     if (!Accepted(*outcome, min_confidence)) continue;
     ++summary.detected;
     summary.correct += outcome->pose.correct ? 1 : 0;

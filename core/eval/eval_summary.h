@@ -26,6 +26,14 @@ struct ObjectSummary {
   int outside_envelope = 0;  // targets no template of the archive covers
   int absent = 0;            // (frame, object) pairs where the frame does not show the object
   int absent_detected = 0;   // of those, with an accepted detection: false detections
+  // Why the targets that are not correct were missed, each counted once, in this order: outside
+  // the envelope, then no detection at all, a wrong pose (accepted or not), or a right pose
+  // whose confidence is below the threshold. They add up to frames - correct.
+  int missed_outside_envelope = 0;
+  int missed_undetected = 0;
+  int missed_wrong_pose = 0;
+  int wrong_pose_accepted = 0;  // of missed_wrong_pose: confident wrong poses
+  int missed_below_threshold = 0;
 
   // Accepted detections that are right, over all accepted ones (on targets and absent pairs);
   // 100 when nothing was accepted.

@@ -81,6 +81,20 @@ TEST(EvalReportTest, TableHasARowPerObjectAndAll) {
               HasSubstr("(scene 1)"));
 }
 
+TEST(EvalReportTest, MissesAreNamedByCause) {
+  const MethodRun run = SampleRun();  // one right, one not detected
+  const MethodSummary summary = Summary(run);
+  EXPECT_EQ(MissesText(summary),
+            "Targets missed: 1 of 2: 0 outside the envelope, 1 not detected, 0 with a wrong pose "
+            "(0 of them accepted), 0 with a right pose below the confidence threshold.\n");
+  EXPECT_THAT(MissesTable(summary), HasSubstr("| 3 | 2 | 1 | 0 | 1 | 0 (0) | 0 |"));
+  EXPECT_THAT(EvalReportMarkdown(Info(), summary, run), HasSubstr("Targets missed: 1 of 2"));
+  EXPECT_EQ(EvalReportJson(Info(), summary, run)["summary"]["overall"]["misses"]["undetected"], 1);
+  MethodRun all_right = run;
+  all_right.outcomes.pop_back();
+  EXPECT_EQ(MissesText(Summary(all_right)), "");
+}
+
 TEST(EvalReportTest, WritesBothFilesIntoANewFolder) {
   test::TempDir dir;
   const MethodRun run = SampleRun();

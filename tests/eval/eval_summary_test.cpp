@@ -98,6 +98,43 @@ TEST(EvalSummaryTest, ConfidenceThresholdAndAbsentObjects) {
   EXPECT_DOUBLE_EQ(strict.overall.PrecisionPercent(), 100.0);
 }
 
+TEST(EvalSummaryTest, EveryMissHasOneCause) {
+  MethodRun run;
+  TargetOutcome right = Outcome(1, true, true, true, true, 10);
+  right.confidence = 0.9;
+  TargetOutcome right_but_doubtful = Outcome(1, true, true, true, true, 10);
+  right_but_doubtful.confidence = 0.5;
+  TargetOutcome confident_wrong = Outcome(1, true, false, false, false, 10);
+  confident_wrong.confidence = 0.95;
+  TargetOutcome doubtful_wrong = Outcome(1, true, false, false, false, 10);
+  doubtful_wrong.confidence = 0.2;
+  const TargetOutcome undetected = Outcome(1, false, false, false, false, 10);
+  TargetOutcome outside = Outcome(2, true, false, false, false, 10);
+  outside.outside_envelope = true;
+  TargetOutcome outside_but_found = Outcome(2, true, true, true, true, 10);
+  outside_but_found.outside_envelope = true;
+  outside_but_found.confidence = 0.9;
+  TargetOutcome absent = Outcome(2, true, false, false, false, 10);
+  absent.present = false;
+  absent.confidence = 0.9;
+  run.outcomes = {right,   right_but_doubtful, confident_wrong, doubtful_wrong, undetected,
+                  outside, outside_but_found,  absent};
+  const MethodSummary summary = Summarize(run, Models(), 0.8);
+  const ObjectSummary& all = summary.overall;
+  EXPECT_EQ(all.frames, 7);
+  EXPECT_EQ(all.correct, 2);
+  EXPECT_EQ(all.missed_outside_envelope, 1);  // the one found anyway is not a miss
+  EXPECT_EQ(all.missed_undetected, 1);
+  EXPECT_EQ(all.missed_wrong_pose, 2);
+  EXPECT_EQ(all.wrong_pose_accepted, 1);
+  EXPECT_EQ(all.missed_below_threshold, 1);
+  EXPECT_EQ(all.missed_outside_envelope + all.missed_undetected + all.missed_wrong_pose +
+                all.missed_below_threshold,
+            all.frames - all.correct);
+  EXPECT_EQ(summary.objects[0].missed_wrong_pose, 2);
+  EXPECT_EQ(summary.objects[1].missed_outside_envelope, 1);
+}
+
 TEST(EvalSummaryTest, AnEmptyRunHasZeroRates) {
   const MethodSummary summary = Summarize(MethodRun{}, Models());
   EXPECT_TRUE(summary.objects.empty());
