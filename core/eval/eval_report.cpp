@@ -241,8 +241,9 @@ std::string ConfidenceText(const MethodSummary& summary) {
 std::string EvalReportMarkdown(const EvalRunInfo& info, const MethodSummary& summary,
                                const MethodRun& run) {
   std::string archives;
-  for (const std::string& archive : info.archives)
+  for (const std::string& archive : info.archives) {
     archives += (archives.empty() ? "" : ", ") + archive;
+  }
   std::string text = "# LayerMOD evaluation\n\n";
   text += "- dataset: `" + info.dataset_dir + "`" +
           (info.scene_id ? " (scene " + std::to_string(*info.scene_id) + ")" : "") + "\n";

@@ -96,8 +96,9 @@ MethodSummary Summarize(const MethodRun& run, const std::map<std::int32_t, EvalM
     summary.objects.push_back(object);
   }
   summary.overall = SummarizeOutcomes(all, min_confidence);
-  if (objects_with_targets > 0)
+  if (objects_with_targets > 0) {
     summary.mean_object_accuracy_percent = accuracy_sum / objects_with_targets;
+  }
   summary.precision_recall = ComputePrecisionRecall(run.outcomes);
   summary.frames = static_cast<int>(run.frame_times_ms.size());
   summary.mean_frame_ms = Mean(run.frame_times_ms);

@@ -58,6 +58,7 @@ inline constexpr bool kIsChoiceOption = OptionChoices<T>::kIsChoice;
 template <typename T>
 std::vector<std::string> ChoiceNames() {
   std::vector<std::string> names;
+  names.reserve(OptionChoices<T>::kValues.size());
   for (T value : OptionChoices<T>::kValues) names.emplace_back(OptionChoices<T>::Name(value));
   return names;
 }
