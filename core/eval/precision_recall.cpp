@@ -83,46 +83,61 @@ PrecisionRecallPoint PointAt(const std::vector<TargetOutcome>& outcomes, double 
   return MakePoint(threshold, right, accepted, CountTargets(outcomes));
 }
 
-cv::Mat DrawPrecisionRecall(const PrecisionRecallCurve& curve, const PrecisionRecallPoint& chosen) {
-  const cv::Size size(560, 440);
-  const cv::Rect plot(70, 30, 460, 340);
-  cv::Mat image(size, CV_8UC3, cv::Scalar(255, 255, 255));
-  const auto to_pixel = [&](double recall, double precision) {
-    return cv::Point(plot.x + static_cast<int>(recall * plot.width),
-                     plot.y + plot.height - static_cast<int>(precision * plot.height));
-  };
-  const cv::Scalar grid(225, 225, 225), ink(40, 40, 40), line(200, 110, 30), mark(40, 40, 220);
+namespace {
+
+// The plot's frame: a caption line at the top, the axis name "precision" on its own line under
+// it (above the vertical axis), the plot area, the tick labels and "recall" under it.
+constexpr int kCaptionBaselinePx = 20;
+const cv::Size kPlotImageSize(560, 460);
+const cv::Rect kPlotArea(70, 50, 460, 340);
+const cv::Scalar kInk(40, 40, 40);
+
+cv::Point ToPixel(double recall, double precision) {
+  return {kPlotArea.x + static_cast<int>(recall * kPlotArea.width),
+          kPlotArea.y + kPlotArea.height - static_cast<int>(precision * kPlotArea.height)};
+}
+
+void PutLabel(cv::Mat& image, const std::string& text, cv::Point at, double scale) {
+  cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, scale, kInk, 1, cv::LINE_AA);
+}
+
+void DrawGridAndAxes(cv::Mat& image) {
+  const cv::Scalar grid(225, 225, 225);
   for (int i = 0; i <= 10; ++i) {
     const double v = i / 10.0;
-    cv::line(image, to_pixel(v, 0.0), to_pixel(v, 1.0), grid, 1);
-    cv::line(image, to_pixel(0.0, v), to_pixel(1.0, v), grid, 1);
+    cv::line(image, ToPixel(v, 0.0), ToPixel(v, 1.0), grid, 1);
+    cv::line(image, ToPixel(0.0, v), ToPixel(1.0, v), grid, 1);
     if (i % 2 == 0) {
       char label[8];
       std::snprintf(label, sizeof label, "%.1f", v);
-      cv::putText(image, label, to_pixel(v, 0.0) + cv::Point(-12, 18), cv::FONT_HERSHEY_SIMPLEX,
-                  0.4, ink, 1, cv::LINE_AA);
-      cv::putText(image, label, to_pixel(0.0, v) + cv::Point(-32, 4), cv::FONT_HERSHEY_SIMPLEX, 0.4,
-                  ink, 1, cv::LINE_AA);
+      PutLabel(image, label, ToPixel(v, 0.0) + cv::Point(-12, 18), 0.4);
+      PutLabel(image, label, ToPixel(0.0, v) + cv::Point(-32, 4), 0.4);
     }
   }
-  cv::rectangle(image, plot, ink, 1);
-  cv::Point previous = to_pixel(0.0, curve.points.empty() ? 1.0 : curve.points.front().precision);
+  cv::rectangle(image, kPlotArea, kInk, 1);
+  PutLabel(image, "recall",
+           cv::Point(kPlotArea.x + kPlotArea.width / 2 - 20, kPlotImageSize.height - 20), 0.5);
+  PutLabel(image, "precision", cv::Point(4, kPlotArea.y - 12), 0.45);
+}
+
+}  // namespace
+
+cv::Mat DrawPrecisionRecall(const PrecisionRecallCurve& curve, const PrecisionRecallPoint& chosen) {
+  cv::Mat image(kPlotImageSize, CV_8UC3, cv::Scalar(255, 255, 255));
+  DrawGridAndAxes(image);
+  const cv::Scalar line(200, 110, 30), mark(40, 40, 220);
+  cv::Point previous = ToPixel(0.0, curve.points.empty() ? 1.0 : curve.points.front().precision);
   for (const PrecisionRecallPoint& point : curve.points) {
-    const cv::Point current = to_pixel(point.recall, point.precision);
+    const cv::Point current = ToPixel(point.recall, point.precision);
     cv::line(image, previous, current, line, 2, cv::LINE_AA);
     previous = current;
   }
-  cv::circle(image, to_pixel(chosen.recall, chosen.precision), 6, mark, 2, cv::LINE_AA);
+  cv::circle(image, ToPixel(chosen.recall, chosen.precision), 6, mark, 2, cv::LINE_AA);
   char caption[160];
   std::snprintf(caption, sizeof caption,
                 "min confidence %.2f: precision %.3f, recall %.3f; area %.3f", chosen.threshold,
                 chosen.precision, chosen.recall, curve.area);
-  cv::putText(image, caption, cv::Point(plot.x, 20), cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
-              cv::LINE_AA);
-  cv::putText(image, "recall", cv::Point(plot.x + plot.width / 2 - 20, size.height - 20),
-              cv::FONT_HERSHEY_SIMPLEX, 0.5, ink, 1, cv::LINE_AA);
-  cv::putText(image, "precision", cv::Point(4, plot.y - 8), cv::FONT_HERSHEY_SIMPLEX, 0.45, ink, 1,
-              cv::LINE_AA);
+  PutLabel(image, caption, cv::Point(kPlotArea.x, kCaptionBaselinePx), 0.45);
   return image;
 }
 
