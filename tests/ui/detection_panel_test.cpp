@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -164,6 +165,21 @@ class DetectionPanelTest : public QObject {
     QCOMPARE(restored.options().icp.huber_mm, 7.5);
     restored.SetOptions(DetectorOptions{});
     restored.SaveSettings();  // leave the defaults for the other tests
+  }
+
+  void FieldLabelsAndDecimalsReadWell() {
+    DetectionOptionsForm form;
+    const auto label = [&](const char* key) {
+      QWidget* box = form.field_widget(key);
+      auto* layout = qobject_cast<QFormLayout*>(box->parentWidget()->layout());
+      return qobject_cast<QLabel*>(layout->labelForField(box))->text();
+    };
+    QCOMPARE(label("nms_radius"), QStringLiteral("NMS radius"));
+    QCOMPARE(label("icp_max_step_deg"), QStringLiteral("ICP max step (deg)"));
+    QCOMPARE(label("min_inlier_ratio"), QStringLiteral("Min inlier ratio"));
+    // A float default shows with the decimals it needs, not a float's rounding noise.
+    QCOMPARE(qobject_cast<QDoubleSpinBox*>(form.field_widget("tree_descend"))->text(),
+             QStringLiteral("0.150"));
   }
 
   void EachOverlayToggles() {

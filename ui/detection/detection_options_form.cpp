@@ -8,8 +8,10 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QStringList>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <type_traits>
@@ -42,18 +44,29 @@ QString ObjectName(std::string_view key) {
   return name;
 }
 
-// "min_inlier_ratio" -> "Min inlier ratio".
+// "min_inlier_ratio" -> "Min inlier ratio", "nms_radius" -> "NMS radius", "icp_max_step_deg" ->
+// "ICP max step (deg)": the key's words, acronyms in capitals and a trailing unit in brackets.
 QString Label(std::string_view key) {
-  QString label = Text(key).replace('_', ' ');
+  QStringList words = Text(key).split('_', Qt::SkipEmptyParts);
+  for (QString& word : words) {
+    if (word == "nms" || word == "icp") word = word.toUpper();
+  }
+  if (words.size() > 1 && words.back() == "deg") words.back() = "(deg)";
+  QString label = words.join(' ');
   if (!label.isEmpty()) label[0] = label[0].toUpper();
   return label;
 }
 
-// Enough decimals to show `value` exactly (a default of 0.005 must not round to 0.01).
+// Enough decimals to show `value` exactly (a default of 0.005 must not round to 0.01). The
+// tolerance is a float's precision: a float default of 0.15 is 0.150000006 as a double and must
+// show as 0.150, not 0.150000.
 int DecimalsFor(double value, double max) {
   for (int decimals = max <= 1.0 ? 3 : 1; decimals < 6; ++decimals) {
     const double scale = std::pow(10.0, decimals);
-    if (std::abs(std::round(value * scale) / scale - value) < 1e-9) return decimals;
+    if (std::abs(std::round(value * scale) / scale - value) <
+        1e-7 * std::max(1.0, std::abs(value))) {
+      return decimals;
+    }
   }
   return 6;
 }
