@@ -52,39 +52,6 @@ double MonotoneArea(const std::vector<PrecisionRecallPoint>& points) {
   return area;
 }
 
-}  // namespace
-
-PrecisionRecallCurve ComputePrecisionRecall(const std::vector<TargetOutcome>& outcomes) {
-  PrecisionRecallCurve curve;
-  curve.targets = CountTargets(outcomes);
-  const std::vector<Judged> judged = JudgedDetections(outcomes);
-  int right = 0;
-  for (std::size_t i = 0; i < judged.size(); ++i) {
-    right += judged[i].right ? 1 : 0;
-    const bool last_of_value =
-        i + 1 == judged.size() || judged[i + 1].confidence < judged[i].confidence;
-    if (last_of_value) {
-      curve.points.push_back(
-          MakePoint(judged[i].confidence, right, static_cast<int>(i + 1), curve.targets));
-    }
-  }
-  curve.area = MonotoneArea(curve.points);
-  return curve;
-}
-
-PrecisionRecallPoint PointAt(const std::vector<TargetOutcome>& outcomes, double threshold) {
-  int right = 0;
-  int accepted = 0;
-  for (const Judged& judged : JudgedDetections(outcomes)) {
-    if (judged.confidence < threshold) break;
-    ++accepted;
-    right += judged.right ? 1 : 0;
-  }
-  return MakePoint(threshold, right, accepted, CountTargets(outcomes));
-}
-
-namespace {
-
 // The plot's frame: a caption line at the top, the axis name "precision" on its own line under
 // it (above the vertical axis), the plot area, the tick labels and "recall" under it.
 constexpr int kCaptionBaselinePx = 20;
@@ -121,6 +88,35 @@ void DrawGridAndAxes(cv::Mat& image) {
 }
 
 }  // namespace
+
+PrecisionRecallCurve ComputePrecisionRecall(const std::vector<TargetOutcome>& outcomes) {
+  PrecisionRecallCurve curve;
+  curve.targets = CountTargets(outcomes);
+  const std::vector<Judged> judged = JudgedDetections(outcomes);
+  int right = 0;
+  for (std::size_t i = 0; i < judged.size(); ++i) {
+    right += judged[i].right ? 1 : 0;
+    const bool last_of_value =
+        i + 1 == judged.size() || judged[i + 1].confidence < judged[i].confidence;
+    if (last_of_value) {
+      curve.points.push_back(
+          MakePoint(judged[i].confidence, right, static_cast<int>(i + 1), curve.targets));
+    }
+  }
+  curve.area = MonotoneArea(curve.points);
+  return curve;
+}
+
+PrecisionRecallPoint PointAt(const std::vector<TargetOutcome>& outcomes, double threshold) {
+  int right = 0;
+  int accepted = 0;
+  for (const Judged& judged : JudgedDetections(outcomes)) {
+    if (judged.confidence < threshold) break;
+    ++accepted;
+    right += judged.right ? 1 : 0;
+  }
+  return MakePoint(threshold, right, accepted, CountTargets(outcomes));
+}
 
 cv::Mat DrawPrecisionRecall(const PrecisionRecallCurve& curve, const PrecisionRecallPoint& chosen) {
   cv::Mat image(kPlotImageSize, CV_8UC3, cv::Scalar(255, 255, 255));

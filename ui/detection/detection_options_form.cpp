@@ -57,14 +57,14 @@ QString Label(std::string_view key) {
   return label;
 }
 
-// Enough decimals to show `value` exactly (a default of 0.005 must not round to 0.01). The
-// tolerance is a float's precision: a float default of 0.15 is 0.150000006 as a double and must
-// show as 0.150, not 0.150000.
-int DecimalsFor(double value, double max) {
+// Enough decimals to show `value` exactly (a default of 0.005 must not round to 0.01): the
+// fewest whose rounded value, read back into T as ReadBox does, is the default again (a float
+// default of 0.15 shows as 0.150, not as the 0.150000006 of its double).
+template <typename T>
+int DecimalsFor(T value, double max) {
   for (int decimals = max <= 1.0 ? 3 : 1; decimals < 6; ++decimals) {
     const double scale = std::pow(10.0, decimals);
-    if (std::abs(std::round(value * scale) / scale - value) <
-        1e-7 * std::max(1.0, std::abs(value))) {
+    if (static_cast<T>(std::round(static_cast<double>(value) * scale) / scale) == value) {
       return decimals;
     }
   }
@@ -84,7 +84,7 @@ QWidget* MakeBox(const DetectorOptionField& field, const T& default_value) {
     return box;
   } else {
     auto* box = new QDoubleSpinBox;
-    box->setDecimals(DecimalsFor(static_cast<double>(default_value), field.max));
+    box->setDecimals(DecimalsFor(default_value, field.max));
     box->setRange(field.min, field.max);
     box->setSingleStep(field.max <= 1.0 ? 0.05 : field.max <= 10.0 ? 0.1 : 1.0);
     return box;
