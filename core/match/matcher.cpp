@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -245,28 +246,35 @@ void KeepBestHits(std::vector<CoarseHit>& hits, int max_hits) {
   }
 }
 
-// Grid positions at or above the threshold, best first, at most `max_hits`: over the whole grid
-// or, when `spans` is given, over those cells only (the others were not scored).
-std::vector<CoarseHit> CoarseHits(const GridSimilarity& grid, float threshold_percent, int max_hits,
-                                  const std::vector<GridRowSpan>* spans) {
-  // Cells not scored hold 0, which never passes: the threshold is above 0.
-  const int min_sum = std::max(MinimumSumForPercent(threshold_percent, grid.feature_count), 1);
+// Cells at or above the threshold, best first, at most `max_hits`: `sums` holds the scores of the
+// cells of `spans`, span after span (ComputeSpanSimilarity).
+std::vector<CoarseHit> CoarseHits(const std::vector<GridRowSpan>& spans,
+                                  const std::vector<std::uint16_t>& sums, int feature_count,
+                                  float threshold_percent, int max_hits) {
+  // The threshold is above 0, so a template without usable features has no hit.
+  const int min_sum = std::max(MinimumSumForPercent(threshold_percent, feature_count), 1);
   std::vector<CoarseHit> hits;
-  const auto collect = [&](int gy, int gx0, int gx1) {
-    const auto* row = grid.sums.ptr<std::uint16_t>(gy);
-    // Most rows hold no hit: a (vectorized) maximum rejects them without a branch per cell.
-    if (*std::max_element(row + gx0, row + gx1 + 1) < min_sum) return;
-    for (int gx = gx0; gx <= gx1; ++gx) {
-      if (row[gx] >= min_sum) hits.push_back({row[gx], {gx, gy}});
+  const std::uint16_t* row = sums.data();
+  for (const GridRowSpan& span : spans) {
+    const int length = span.last_column - span.first_column + 1;
+    // Most spans hold no hit: a (vectorized) maximum rejects them without a branch per cell.
+    if (*std::max_element(row, row + length) >= min_sum) {
+      for (int i = 0; i < length; ++i) {
+        if (row[i] >= min_sum) hits.push_back({row[i], {span.first_column + i, span.row}});
+      }
     }
-  };
-  if (spans == nullptr) {
-    for (int gy = 0; gy < grid.sums.rows; ++gy) collect(gy, 0, grid.sums.cols - 1);
-  } else {
-    for (const GridRowSpan& span : *spans) collect(span.row, span.first_column, span.last_column);
+    row += length;
   }
   KeepBestHits(hits, max_hits);
   return hits;
+}
+
+// Every cell of a grid of `cells`, as spans.
+std::vector<GridRowSpan> EveryCell(const cv::Size& cells) {
+  std::vector<GridRowSpan> spans;
+  spans.reserve(cells.height);
+  for (int gy = 0; gy < cells.height; ++gy) spans.push_back({gy, 0, cells.width - 1});
+  return spans;
 }
 
 // The best position of the window: highest spread score; among equals, the best pixel-exact
@@ -355,20 +363,15 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
-  GridSimilarity grid;
-  std::vector<GridRowSpan> near;
-  if (!area.restricted) {
-    grid = ComputeGridSimilarity(record.levels[top], top_level, top_summary, similarity);
-  } else {
-    near = NearCells(geometry, cells, area);
-    if (near.empty()) return result;
-    grid =
-        ComputeGridSimilarityInSpans(record.levels[top], top_level, top_summary, near, similarity);
-  }
+  const std::vector<GridRowSpan> scored =
+      area.restricted ? NearCells(geometry, cells, area) : EveryCell(cells);
+  if (scored.empty()) return result;
+  thread_local std::vector<std::uint16_t> sums;
+  ComputeSpanSimilarity(record.levels[top], top_level, top_summary, scored, sums, similarity);
   result.top = top;
   result.half_box = geometry.half_box;
-  result.hits = CoarseHits(grid, options.threshold_percent, options.max_candidates_per_template,
-                           area.restricted ? &near : nullptr);
+  result.hits = CoarseHits(scored, sums, top_summary.usable_features, options.threshold_percent,
+                           options.max_candidates_per_template);
   for (CoarseHit& hit : result.hits) {
     hit.percent = SimilarityPercent(hit.sum, top_summary.usable_features);
   }
@@ -519,6 +522,9 @@ void MatchOptions::Validate() const {
 struct PreparedScene::LazyLevel {
   SceneLevel level;
   tbb::collaborative_once_flag linearized;
+  // Set once the linear memories are built: every template scored asks, and the once-flag's
+  // own check costs more than this load.
+  std::atomic<bool> ready{false};
 };
 
 PreparedScene::PreparedScene() = default;
@@ -550,7 +556,11 @@ const SceneLevel& PreparedScene::Level(int level) const {
 const SceneLevel& PreparedScene::LinearizedLevel(int level) const {
   Level(level);  // range check
   LazyLevel& lazy = *levels_[level];
-  tbb::collaborative_call_once(lazy.linearized, [&] { LinearizeSceneLevel(lazy.level); });
+  if (lazy.ready.load(std::memory_order_acquire)) return lazy.level;
+  tbb::collaborative_call_once(lazy.linearized, [&] {
+    LinearizeSceneLevel(lazy.level);
+    lazy.ready.store(true, std::memory_order_release);
+  });
   return lazy.level;
 }
 

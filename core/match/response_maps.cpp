@@ -17,7 +17,15 @@ struct NibbleTables {
   std::array<std::array<std::uint8_t, 16>, kOrientationCount> high{};
 };
 
-NibbleTables MakeNibbleTables() {
+constexpr int ConstexprOrientationSimilarity(int label, int scene_label) {
+  const int difference =
+      (label > scene_label ? label - scene_label : scene_label - label) % kOrientationCount;
+  const int distance = std::min(difference, kOrientationCount - difference);
+  if (distance == 0) return kMaxFeatureScore;
+  return distance == 1 ? 1 : 0;
+}
+
+constexpr NibbleTables MakeNibbleTables() {
   NibbleTables tables;
   for (int label = 0; label < kOrientationCount; ++label) {
     for (int nibble = 0; nibble < 16; ++nibble) {
@@ -25,8 +33,8 @@ NibbleTables MakeNibbleTables() {
       int high = 0;
       for (int bit = 0; bit < 4; ++bit) {
         if ((nibble & (1 << bit)) == 0) continue;
-        low = std::max(low, OrientationSimilarity(label, bit));
-        high = std::max(high, OrientationSimilarity(label, bit + 4));
+        low = std::max(low, ConstexprOrientationSimilarity(label, bit));
+        high = std::max(high, ConstexprOrientationSimilarity(label, bit + 4));
       }
       tables.low[label][nibble] = static_cast<std::uint8_t>(low);
       tables.high[label][nibble] = static_cast<std::uint8_t>(high);
@@ -35,18 +43,16 @@ NibbleTables MakeNibbleTables() {
   return tables;
 }
 
-const NibbleTables& Tables() {
-  static const NibbleTables tables = MakeNibbleTables();
-  return tables;
-}
+// Built by the compiler: BitmaskSimilarity runs per feature and position in refinement, where
+// a guarded function-local static cost more than the lookup itself.
+constexpr NibbleTables kTables = MakeNibbleTables();
+
+const NibbleTables& Tables() { return kTables; }
 
 }  // namespace
 
 int OrientationSimilarity(int label, int scene_label) {
-  const int difference = std::abs(label - scene_label) % kOrientationCount;
-  const int distance = std::min(difference, kOrientationCount - difference);
-  if (distance == 0) return kMaxFeatureScore;
-  return distance == 1 ? 1 : 0;
+  return ConstexprOrientationSimilarity(label, scene_label);
 }
 
 int BitmaskSimilarity(int label, std::uint8_t bitmask) {

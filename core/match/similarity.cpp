@@ -87,22 +87,42 @@ std::vector<GridRowSpan> ClipAndSortSpans(std::span<const GridRowSpan> spans,
 // The spans' cells in row-major index space (stride grid_width), as runs. Consecutive spans are
 // merged when close, across row ends too: the cells in between (including those past a row's
 // last valid column) are computed in passing and never read back, and one long run beats many
-// short ones. `spans` must be sorted (ClipAndSortSpans).
-std::vector<Run> GridRuns(const std::vector<GridRowSpan>& spans, int grid_width) {
+// short ones. Runs are packed one after the other into the sums buffer, each rounded up to whole
+// SIMD blocks, so the buffer is only as long as what is scored. `spans` must be sorted
+// (ClipAndSortSpans).
+std::vector<Run> GridRuns(std::span<const GridRowSpan> spans, int grid_width) {
   std::vector<Run> runs;
+  int buffer_end = 0;
   for (const GridRowSpan& span : spans) {
     const int start = span.row * grid_width + span.first_column;
     const int end = span.row * grid_width + span.last_column + 1;
     if (!runs.empty()) {
       Run& last = runs.back();
-      if (start < last.buffer_offset + RoundUpToSimdBlock(last.length) + kMergeGapCells) {
-        last.length = std::max(last.length, end - last.buffer_offset);
+      const auto last_start = static_cast<int>(last.source_offset);
+      if (start < last_start + RoundUpToSimdBlock(last.length) + kMergeGapCells) {
+        last.length = std::max(last.length, end - last_start);
+        buffer_end = last.buffer_offset + RoundUpToSimdBlock(last.length);
         continue;
       }
     }
-    runs.push_back(Run{start, start, end - start});
+    runs.push_back(Run{buffer_end, start, end - start});
+    buffer_end += RoundUpToSimdBlock(end - start);
   }
   return runs;
+}
+
+// Where each span's first cell lies in the packed sums buffer of GridRuns(spans, grid_width).
+std::vector<int> SpanBufferOffsets(std::span<const GridRowSpan> spans, const std::vector<Run>& runs,
+                                   int grid_width) {
+  std::vector<int> offsets;
+  offsets.reserve(spans.size());
+  std::size_t run = 0;
+  for (const GridRowSpan& span : spans) {
+    const int start = span.row * grid_width + span.first_column;
+    while (start >= runs[run].source_offset + runs[run].length) ++run;
+    offsets.push_back(runs[run].buffer_offset + start - static_cast<int>(runs[run].source_offset));
+  }
+  return offsets;
 }
 
 // Every valid cell, or the non-zero stretches of a mask, as spans.
@@ -157,14 +177,12 @@ std::size_t CommonResponseStep(const TemplateLevel& level, const SceneLevel& sce
 class SpreadDivider {
  public:
   explicit SpreadDivider(int spread_px)
-      : spread_px_(spread_px), magic_((1u << 20) / static_cast<std::uint32_t>(spread_px) + 1) {}
+      : magic_((1u << 20) / static_cast<std::uint32_t>(spread_px) + 1) {}
   int Quotient(int x) const {
     return static_cast<int>((static_cast<std::uint32_t>(x) * magic_) >> 20);
   }
-  int Remainder(int x) const { return x - Quotient(x) * spread_px_; }
 
  private:
-  int spread_px_;
   std::uint32_t magic_;
 };
 
@@ -190,7 +208,45 @@ cv::Rect ValidRect(const cv::Size& extent, const cv::Size& scene_size_px) {
   return {0, 0, columns, rows};
 }
 
-// The grid pass proper, on a summarized template level.
+// The grid pass proper on `wanted` (spans of a summarized template level, clipped to its cells,
+// sorted, not overlapping): the sums of their cells, span after span, into `sums`.
+void ScoreCells(const TemplateLevel& level, const SceneLevel& scene,
+                const TemplateLevelSummary& summary, std::span<const GridRowSpan> wanted,
+                const SimilarityOptions& options, std::vector<std::uint16_t>& sums) {
+  if (!scene.linearized) {
+    throw Error("the scene level has no linear memories (use LinearizeSceneLevel)");
+  }
+  sums.clear();
+  std::size_t cell_count = 0;
+  for (const GridRowSpan& span : wanted) cell_count += span.last_column - span.first_column + 1;
+  if (cell_count == 0 || summary.usable_features == 0) {
+    sums.assign(cell_count, 0);
+    return;
+  }
+  const int grid_width = GridWidth(scene);
+  const std::vector<Run> runs = GridRuns(wanted, grid_width);
+  const SpreadDivider divider(scene.spread_px);
+  std::vector<const std::uint8_t*> sources;
+  sources.reserve(summary.usable_features);
+  ForEachUsableFeature(level, scene, [&](const Feature& f) {
+    const LinearMemory& memory = scene.memories[ModalityIndex(f.modality)].orientations[f.label];
+    const int qx = divider.Quotient(f.x);
+    const int qy = divider.Quotient(f.y);
+    sources.push_back(memory.Memory(f.y - qy * scene.spread_px, f.x - qx * scene.spread_px) +
+                      static_cast<std::ptrdiff_t>(qy) * grid_width + qx);
+  });
+  const int buffer_size = runs.back().buffer_offset + RoundUpToSimdBlock(runs.back().length);
+  thread_local std::vector<std::uint16_t> packed;
+  AccumulateRuns(sources, runs, buffer_size, options, packed);
+  const std::vector<int> offsets = SpanBufferOffsets(wanted, runs, grid_width);
+  sums.reserve(cell_count);
+  for (std::size_t i = 0; i < wanted.size(); ++i) {
+    const auto first = packed.begin() + offsets[i];
+    sums.insert(sums.end(), first, first + (wanted[i].last_column - wanted[i].first_column + 1));
+  }
+}
+
+// ScoreCells laid out as the grid image.
 GridSimilarity ScoreGrid(const TemplateLevel& level, const SceneLevel& scene,
                          const TemplateLevelSummary& summary, std::span<const GridRowSpan> spans,
                          const SimilarityOptions& options) {
@@ -200,30 +256,14 @@ GridSimilarity ScoreGrid(const TemplateLevel& level, const SceneLevel& scene,
   const cv::Size cells = GridPositionCount(summary.extent, scene);
   result.sums = cv::Mat::zeros(cells, CV_16UC1);
   if (cells.empty() || result.feature_count == 0) return result;
-  if (!scene.linearized) {
-    throw Error("the scene level has no linear memories (use LinearizeSceneLevel)");
-  }
   const std::vector<GridRowSpan> wanted = ClipAndSortSpans(spans, cells);
-  if (wanted.empty()) return result;
-  const int grid_width = GridWidth(scene);
-  const std::vector<Run> runs = GridRuns(wanted, grid_width);
-  const SpreadDivider divider(scene.spread_px);
-  std::vector<const std::uint8_t*> sources;
-  sources.reserve(result.feature_count);
-  ForEachUsableFeature(level, scene, [&](const Feature& f) {
-    const LinearMemory& memory = scene.memories[ModalityIndex(f.modality)].orientations[f.label];
-    sources.push_back(memory.Memory(divider.Remainder(f.y), divider.Remainder(f.x)) +
-                      static_cast<std::ptrdiff_t>(divider.Quotient(f.y)) * grid_width +
-                      divider.Quotient(f.x));
-  });
-  const int buffer_size = runs.back().buffer_offset + RoundUpToSimdBlock(runs.back().length);
-  thread_local std::vector<std::uint16_t> flat;
-  AccumulateRuns(sources, runs, buffer_size, options, flat);
+  thread_local std::vector<std::uint16_t> sums;
+  ScoreCells(level, scene, summary, wanted, options, sums);
+  auto next = sums.begin();
   for (const GridRowSpan& span : wanted) {
-    std::copy_n(
-        flat.begin() + static_cast<std::ptrdiff_t>(span.row) * grid_width + span.first_column,
-        span.last_column - span.first_column + 1,
-        result.sums.ptr<std::uint16_t>(span.row) + span.first_column);
+    const int length = span.last_column - span.first_column + 1;
+    std::copy_n(next, length, result.sums.ptr<std::uint16_t>(span.row) + span.first_column);
+    next += length;
   }
   return result;
 }
@@ -335,6 +375,27 @@ GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const Sc
                                             std::span<const GridRowSpan> spans,
                                             const SimilarityOptions& options) {
   return ScoreGrid(level, scene, summary, spans, options);
+}
+
+void ComputeSpanSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                           const TemplateLevelSummary& summary, std::span<const GridRowSpan> spans,
+                           std::vector<std::uint16_t>& sums, const SimilarityOptions& options) {
+  const cv::Size cells = GridPositionCount(summary.extent, scene);
+  const GridRowSpan* previous = nullptr;
+  for (const GridRowSpan& span : spans) {
+    const bool inside = span.row >= 0 && span.row < cells.height && span.first_column >= 0 &&
+                        span.first_column <= span.last_column && span.last_column < cells.width;
+    const bool after_previous =
+        previous == nullptr || span.row > previous->row ||
+        (span.row == previous->row && span.first_column > previous->last_column);
+    if (!inside || !after_previous) {
+      throw Error("span similarity: spans must lie within the grid, sorted and apart (row " +
+                  std::to_string(span.row) + ", columns " + std::to_string(span.first_column) +
+                  ".." + std::to_string(span.last_column) + ")");
+    }
+    previous = &span;
+  }
+  ScoreCells(level, scene, summary, spans, options, sums);
 }
 
 LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLevel& scene,

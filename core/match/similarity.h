@@ -9,6 +9,7 @@
 // falls outside it; the spreading (spread.h) still lets a template touching the border be found.
 #pragma once
 
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <span>
 #include <vector>
@@ -95,6 +96,15 @@ GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const Sc
                                             const TemplateLevelSummary& summary,
                                             std::span<const GridRowSpan> spans,
                                             const SimilarityOptions& options = {});
+
+// The sums at the cells of `spans`, one per cell, span after span: ComputeGridSimilarityInSpans
+// without the grid-sized image, for callers that read the scored cells only (the matcher scores
+// tens of thousands of templates per frame, each at a few dozen cells). `spans` must lie within
+// GridPositionCount, sorted by row, then column, and must not overlap; throws Error otherwise.
+// `sums` is reused (cleared, then filled).
+void ComputeSpanSimilarity(const TemplateLevel& level, const SceneLevel& scene,
+                           const TemplateLevelSummary& summary, std::span<const GridRowSpan> spans,
+                           std::vector<std::uint16_t>& sums, const SimilarityOptions& options = {});
 
 // Scores at every pixel position of a small window (coarse-to-fine refinement).
 struct LocalSimilarity {

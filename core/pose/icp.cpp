@@ -38,13 +38,24 @@ std::vector<SurfaceSample> SampleVisibleSurface(const RenderMesh& mesh, const Pi
   return samples;
 }
 
+// std::lround for pixel coordinates without the library call (it ran twice per sample in every
+// ICP step): the truncation and the remainder are exact, and so is comparing it with one half.
+// Coordinates beyond +-2^30 (or NaN) come back as -1, outside every image.
+int RoundToPixel(double x) {
+  constexpr double kLimit = 1 << 30;
+  if (!(std::abs(x) < kLimit)) return -1;
+  const auto truncated = static_cast<int>(x);
+  const double rest = x - truncated;
+  return truncated + (rest >= 0.5 ? 1 : 0) - (rest <= -0.5 ? 1 : 0);
+}
+
 // Scene point seen at the pixel where `point_in_cam` projects; false when none.
 bool SceneCorrespondence(const PinholeCamera& camera, const cv::Mat& depth_mm,
                          const Eigen::Vector3d& point_in_cam, Eigen::Vector3d& scene_point) {
   if (point_in_cam.z() <= 0.0) return false;
   const Eigen::Vector2d pixel = camera.Project(point_in_cam);
-  const int u = static_cast<int>(std::lround(pixel.x()));
-  const int v = static_cast<int>(std::lround(pixel.y()));
+  const int u = RoundToPixel(pixel.x());
+  const int v = RoundToPixel(pixel.y());
   if (u < 0 || v < 0 || u >= depth_mm.cols || v >= depth_mm.rows) return false;
   const float depth = depth_mm.at<float>(v, u);
   if (depth <= 0.0f) return false;
@@ -75,8 +86,12 @@ StepResult SolveStep(const std::vector<SurfaceSample>& samples, const Pose& pose
     Eigen::Matrix<double, 6, 1> jacobian;
     jacobian << point.cross(normal), normal;
     const double weight = std::abs(residual) <= huber_mm ? 1.0 : huber_mm / std::abs(residual);
-    normal_matrix += weight * jacobian * jacobian.transpose();
-    rhs -= weight * jacobian * residual;
+    const Eigen::Matrix<double, 6, 1> weighted = weight * jacobian;
+    // The lower triangle only: the LDLT solve below reads no other entry.
+    for (int col = 0; col < 6; ++col) {
+      for (int row = col; row < 6; ++row) normal_matrix(row, col) += weighted(row) * jacobian(col);
+    }
+    rhs -= weighted * residual;
     result.squared_error += residual * residual;
     ++result.inliers;
   }

@@ -139,6 +139,39 @@ TEST(SimilarityTest, SpansScoreTheirCellsOnly) {
   }
 }
 
+TEST(SimilarityTest, SpanSimilarityListsTheSpansCellsInOrder) {
+  cv::RNG rng(53);
+  const Scene scene = MakeScene({203, 157}, 8, 0.15, rng);
+  for (int count : {40, 150}) {
+    const TemplateLevel level = RandomTemplate(count, {30, 20}, rng);
+    const TemplateLevelSummary summary = SummarizeTemplateLevel(level, scene.level);
+    const cv::Size cells = GridPositionCount(level, scene.level);
+    // Neighbouring spans on one row and on consecutive rows (their runs merge), a far one.
+    const std::vector<GridRowSpan> spans = {
+        {0, 0, 0}, {0, 2, 5}, {1, 0, 3}, {4, 6, 6}, {cells.height - 1, 1, cells.width - 1}};
+    std::vector<std::uint16_t> sums = {7, 7};  // reused: cleared first
+    ComputeSpanSimilarity(level, scene.level, summary, spans, sums);
+    std::size_t next = 0;
+    for (const GridRowSpan& span : spans) {
+      for (int gx = span.first_column; gx <= span.last_column; ++gx) {
+        ASSERT_LT(next, sums.size());
+        EXPECT_EQ(sums[next++], test::NaiveScore(level, scene.naive, {gx * 8, span.row * 8}))
+            << "cell " << gx << "," << span.row;
+      }
+    }
+    EXPECT_EQ(next, sums.size());
+    const std::vector<std::vector<GridRowSpan>> refused = {
+        {{2, 0, 3}, {1, 0, 3}},  // rows out of order
+        {{1, 0, 3}, {1, 3, 5}},  // overlapping
+        {{0, 0, cells.width}},   // past the last column
+        {{cells.height, 0, 0}},  // past the last row
+        {{0, 3, 2}}};            // empty
+    for (const std::vector<GridRowSpan>& bad : refused) {
+      EXPECT_THROW(ComputeSpanSimilarity(level, scene.level, summary, bad, sums), Error);
+    }
+  }
+}
+
 TEST(SimilarityTest, LocalWindowAgreesWithNaiveReferenceAndIsClipped) {
   cv::RNG rng(44);
   for (int t : {1, 5, 8}) {
