@@ -269,14 +269,6 @@ std::vector<CoarseHit> CoarseHits(const std::vector<GridRowSpan>& spans,
   return hits;
 }
 
-// Every cell of a grid of `cells`, as spans.
-std::vector<GridRowSpan> EveryCell(const cv::Size& cells) {
-  std::vector<GridRowSpan> spans;
-  spans.reserve(cells.height);
-  for (int gy = 0; gy < cells.height; ++gy) spans.push_back({gy, 0, cells.width - 1});
-  return spans;
-}
-
 // The best position of the window: highest spread score; among equals, the best pixel-exact
 // alignment; then the one nearest the window centre; then the first in scan order.
 std::optional<Refined> RefineInWindow(const TemplateLevel& level, const SceneLevel& scene,
@@ -364,7 +356,7 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
   const std::vector<GridRowSpan> scored =
-      area.restricted ? NearCells(geometry, cells, area) : EveryCell(cells);
+      area.restricted ? NearCells(geometry, cells, area) : AllCells(cells);
   if (scored.empty()) return result;
   thread_local std::vector<std::uint16_t> sums;
   ComputeSpanSimilarity(record.levels[top], top_level, top_summary, scored, sums, similarity);

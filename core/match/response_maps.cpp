@@ -2,7 +2,6 @@
 #include "match/response_maps.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <string>
 
 #include "util/error.h"
@@ -47,8 +46,6 @@ constexpr NibbleTables MakeNibbleTables() {
 // a guarded function-local static cost more than the lookup itself.
 constexpr NibbleTables kTables = MakeNibbleTables();
 
-const NibbleTables& Tables() { return kTables; }
-
 }  // namespace
 
 int OrientationSimilarity(int label, int scene_label) {
@@ -56,7 +53,7 @@ int OrientationSimilarity(int label, int scene_label) {
 }
 
 int BitmaskSimilarity(int label, std::uint8_t bitmask) {
-  const NibbleTables& tables = Tables();
+  const NibbleTables& tables = kTables;
   return std::max(tables.low[label][bitmask & 15], tables.high[label][bitmask >> 4]);
 }
 
@@ -66,7 +63,7 @@ std::array<cv::Mat, kOrientationCount> ComputeResponseMaps(const cv::Mat& spread
                 std::to_string(spread.type()));
   }
   const SimdPath kernel = ResolveSimdPath(path);
-  const NibbleTables& tables = Tables();
+  const NibbleTables& tables = kTables;
   std::array<cv::Mat, kOrientationCount> maps;
   if (spread.empty()) return maps;
   for (int label = 0; label < kOrientationCount; ++label) {

@@ -125,14 +125,7 @@ std::vector<int> SpanBufferOffsets(std::span<const GridRowSpan> spans, const std
   return offsets;
 }
 
-// Every valid cell, or the non-zero stretches of a mask, as spans.
-std::vector<GridRowSpan> AllCells(const cv::Size& cells) {
-  std::vector<GridRowSpan> spans;
-  spans.reserve(cells.height);
-  for (int gy = 0; gy < cells.height; ++gy) spans.push_back({gy, 0, cells.width - 1});
-  return spans;
-}
-
+// The non-zero stretches of a mask, as spans.
 std::vector<GridRowSpan> MaskSpans(const cv::Mat& mask) {
   std::vector<GridRowSpan> spans;
   for (int gy = 0; gy < mask.rows; ++gy) {
@@ -354,6 +347,13 @@ GridSimilarity ComputeGridSimilarity(const TemplateLevel& level, const SceneLeve
     throw Error("grid similarity mask must be CV_8UC1 of the grid position count");
   }
   return ScoreGrid(level, scene, summary, MaskSpans(cell_mask), options);
+}
+
+std::vector<GridRowSpan> AllCells(const cv::Size& cells) {
+  std::vector<GridRowSpan> spans;
+  spans.reserve(cells.height);
+  for (int gy = 0; gy < cells.height; ++gy) spans.push_back({gy, 0, cells.width - 1});
+  return spans;
 }
 
 GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,

@@ -82,6 +82,9 @@ struct GridRowSpan {
   int last_column = 0;
 };
 
+// Every cell of a grid of `cells` (GridPositionCount), one span per row.
+std::vector<GridRowSpan> AllCells(const cv::Size& cells);
+
 // Scores only the cells of `spans` (any order, may overlap; clipped to GridPositionCount); the
 // other cells hold 0. Cheaper than a mask when few cells are wanted: no pass over the whole grid.
 GridSimilarity ComputeGridSimilarityInSpans(const TemplateLevel& level, const SceneLevel& scene,
