@@ -108,12 +108,15 @@ TEST_F(EvaluationTest, DetectorRunReportIsConsistent) {
   EXPECT_LE(object.correct, object.detected);
   EXPECT_LE(object.box_correct, object.detected);
   EXPECT_LE(object.detected, object.frames);
+  // The summary counts a right pose only when its detection is accepted (confidence at least the
+  // run's threshold).
   int correct = 0;
   for (const TargetOutcome& outcome : evaluation.run.outcomes) {
     if (!outcome.detected) continue;
     EXPECT_TRUE(std::isfinite(outcome.pose.error_mm));
     EXPECT_EQ(outcome.pose.correct, outcome.pose.error_mm <= 0.1 * object.diameter_mm);
-    correct += outcome.pose.correct ? 1 : 0;
+    const bool accepted = outcome.confidence >= summary.min_confidence;
+    correct += outcome.pose.correct && accepted ? 1 : 0;
   }
   EXPECT_EQ(object.correct, correct);
   EXPECT_DOUBLE_EQ(object.AccuracyPercent(), 100.0 * correct / kImages);
