@@ -48,6 +48,18 @@ PinholeCamera PinholeCamera::Scaled(double factor) const {
   return scaled;
 }
 
+PinholeCamera PinholeCamera::EveryNthPixel(int step) const {
+  if (step < 1) throw Error("camera: the pixel step must be at least 1");
+  PinholeCamera sampled = *this;
+  sampled.fx /= step;
+  sampled.fy /= step;
+  sampled.cx /= step;
+  sampled.cy /= step;
+  sampled.width = (width + step - 1) / step;
+  sampled.height = (height + step - 1) / step;
+  return sampled;
+}
+
 PinholeCamera LoadCameraJson(const std::filesystem::path& path) {
   const std::string text = ReadFileBytes(path);
   nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);

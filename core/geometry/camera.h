@@ -29,6 +29,10 @@ struct PinholeCamera {
   }
   // Scales the intrinsics and image size by `factor` (e.g. 0.5 for a pyramid level).
   PinholeCamera Scaled(double factor) const;
+  // The camera that sees every `step`-th pixel of this one: its pixel (x, y) is this camera's
+  // pixel (step*x, step*y), exactly, because pixel centres sit at integer coordinates. Throws
+  // Error when step < 1.
+  PinholeCamera EveryNthPixel(int step) const;
 
   bool operator==(const PinholeCamera&) const = default;
 };

@@ -20,17 +20,19 @@ struct SurfaceSample {
 // Visible surface of the model at `pose`, sampled on a pixel grid of its render.
 std::vector<SurfaceSample> SampleVisibleSurface(const RenderMesh& mesh, const PinholeCamera& camera,
                                                 const Pose& pose, int step_px) {
-  const RenderedView view = RenderView(mesh, camera, pose);
+  // Only every step_px-th pixel is read, so only those are rendered: pixel (x, y) of the sparse
+  // render is pixel (step_px * x, step_px * y) of the camera.
+  const RenderedView view = RenderView(mesh, camera.EveryNthPixel(step_px), pose);
   std::vector<SurfaceSample> samples;
   if (view.empty()) return samples;
   const Pose model_from_cam = pose.Inverse();
-  for (int y = 0; y < view.depth_mm.rows; y += step_px) {
-    for (int x = 0; x < view.depth_mm.cols; x += step_px) {
+  for (int y = 0; y < view.depth_mm.rows; ++y) {
+    for (int x = 0; x < view.depth_mm.cols; ++x) {
       const float depth = view.depth_mm.at<float>(y, x);
       if (depth <= 0.0f) continue;
       const cv::Vec3f normal = view.normals.at<cv::Vec3f>(y, x);
-      const Eigen::Vector3d point_in_cam = camera.Backproject(
-          Eigen::Vector2d(x + view.roi.x, y + view.roi.y), static_cast<double>(depth));
+      const Eigen::Vector2d pixel(step_px * (x + view.roi.x), step_px * (y + view.roi.y));
+      const Eigen::Vector3d point_in_cam = camera.Backproject(pixel, static_cast<double>(depth));
       samples.push_back({model_from_cam * point_in_cam,
                          model_from_cam.R * Eigen::Vector3d(normal[0], normal[1], normal[2])});
     }

@@ -33,6 +33,22 @@ TEST(CameraTest, ScaledKeepsContinuousCoordinates) {
   EXPECT_NEAR(scaled.y() + 0.5, (full.y() + 0.5) * 0.5, 1e-9);
 }
 
+TEST(CameraTest, EveryNthPixelMapsPixelCentresExactly) {
+  const PinholeCamera full = test::KinectCamera();
+  const PinholeCamera sampled = full.EveryNthPixel(3);
+  EXPECT_EQ(sampled.width, 214);  // 640 / 3 rounded up: pixel 639 = 3 * 213 is the last one
+  EXPECT_EQ(sampled.height, 160);
+  for (const Eigen::Vector3d& point :
+       {Eigen::Vector3d(50.0, 20.0, 700.0), Eigen::Vector3d(-230.0, 140.0, 1250.0)}) {
+    const Eigen::Vector2d in_full = full.Project(point);
+    const Eigen::Vector2d in_sampled = sampled.Project(point);
+    EXPECT_NEAR(in_full.x(), 3.0 * in_sampled.x(), 1e-9);
+    EXPECT_NEAR(in_full.y(), 3.0 * in_sampled.y(), 1e-9);
+  }
+  EXPECT_EQ(full.EveryNthPixel(1), full);
+  EXPECT_THROW(full.EveryNthPixel(0), Error);
+}
+
 TEST(CameraTest, LoadsBopCameraFile) {
   test::TempDir dir;
   WriteFileAtomically(dir / "camera.json",

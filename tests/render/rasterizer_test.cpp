@@ -163,6 +163,31 @@ TEST(RasterizerTest, BoxMatchesAnalyticProjectionExactly) {
   }
 }
 
+TEST(RasterizerTest, EveryNthPixelCameraRendersTheFullImageSampled) {
+  const Eigen::Vector3d half_size(60.0, 40.0, 25.0);
+  const RenderMesh box = test::MakeBox(half_size, 3);
+  const PinholeCamera camera = KinectCamera();
+  const int step = 3;
+  const PinholeCamera sampled = camera.EveryNthPixel(step);
+  const Pose pose = LookAtPose(800, 35, 25, 10, {50, 30});
+  const RenderedView view = RenderView(box, sampled, pose, FullImage());
+  const AnalyticImage analytic = Analytic(
+      camera, [&](const Eigen::Vector3d& ray) { return test::IntersectBox(ray, pose, half_size); });
+  int compared = 0;
+  for (int y = 0; y < sampled.height; ++y) {
+    for (int x = 0; x < sampled.width; ++x) {
+      if (!analytic.Interior(step * x, step * y)) continue;
+      const auto& hit = analytic.at(step * x, step * y);
+      const float depth = view.depth_mm.at<float>(y, x);
+      ASSERT_EQ(hit.has_value(), depth > 0.0f) << "sampled pixel " << x << ", " << y;
+      if (!hit) continue;
+      EXPECT_NEAR(depth, hit->depth_mm, 0.01) << "sampled pixel " << x << ", " << y;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 500);
+}
+
 TEST(RasterizerTest, CameraInsideSphereSeesInnerSurfaceFacingIt) {
   // No back-face culling: meshes are not guaranteed closed or outward-oriented.
   const double radius_mm = 500.0;
