@@ -246,6 +246,25 @@ void KeepBestHits(std::vector<CoarseHit>& hits, int max_hits) {
   }
 }
 
+// The best cell at or above `min_sum` (the first in scan order among equals), as CoarseHits
+// would give it, without collecting the others: `sums` as there.
+std::vector<CoarseHit> BestHit(const std::vector<GridRowSpan>& spans,
+                               const std::vector<std::uint16_t>& sums, int min_sum) {
+  std::vector<CoarseHit> hits;
+  const std::uint16_t* row = sums.data();
+  int best_sum = min_sum - 1;
+  for (const GridRowSpan& span : spans) {
+    const int length = span.last_column - span.first_column + 1;
+    const std::uint16_t* best = std::max_element(row, row + length);  // the first of equals
+    if (*best > best_sum) {
+      best_sum = *best;
+      hits.assign(1, {best_sum, {span.first_column + static_cast<int>(best - row), span.row}});
+    }
+    row += length;
+  }
+  return hits;
+}
+
 // Cells at or above the threshold, best first, at most `max_hits`: `sums` holds the scores of the
 // cells of `spans`, span after span (ComputeSpanSimilarity).
 std::vector<CoarseHit> CoarseHits(const std::vector<GridRowSpan>& spans,
@@ -253,6 +272,7 @@ std::vector<CoarseHit> CoarseHits(const std::vector<GridRowSpan>& spans,
                                   float threshold_percent, int max_hits) {
   // The threshold is above 0, so a template without usable features has no hit.
   const int min_sum = std::max(MinimumSumForPercent(threshold_percent, feature_count), 1);
+  if (max_hits == 1) return BestHit(spans, sums, min_sum);
   std::vector<CoarseHit> hits;
   const std::uint16_t* row = sums.data();
   for (const GridRowSpan& span : spans) {

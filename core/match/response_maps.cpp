@@ -42,20 +42,34 @@ constexpr NibbleTables MakeNibbleTables() {
   return tables;
 }
 
-// Built by the compiler: BitmaskSimilarity runs per feature and position in refinement, where
-// a guarded function-local static cost more than the lookup itself.
+// Built by the compiler: the similarity kernels read them for every pixel.
 constexpr NibbleTables kTables = MakeNibbleTables();
 
+// Whole-byte rows of the nibble tables: refinement looks up one label against many pixels.
+using SimilarityRows = std::array<std::array<std::uint8_t, 256>, kOrientationCount>;
+
+constexpr SimilarityRows MakeSimilarityRows() {
+  SimilarityRows rows{};
+  for (int label = 0; label < kOrientationCount; ++label) {
+    for (int bitmask = 0; bitmask < 256; ++bitmask) {
+      rows[label][bitmask] =
+          std::max(kTables.low[label][bitmask & 15], kTables.high[label][bitmask >> 4]);
+    }
+  }
+  return rows;
+}
+
+constexpr SimilarityRows kSimilarityRows = MakeSimilarityRows();
+
 }  // namespace
+
+const std::uint8_t* BitmaskSimilarityRow(int label) { return kSimilarityRows[label].data(); }
 
 int OrientationSimilarity(int label, int scene_label) {
   return ConstexprOrientationSimilarity(label, scene_label);
 }
 
-int BitmaskSimilarity(int label, std::uint8_t bitmask) {
-  const NibbleTables& tables = kTables;
-  return std::max(tables.low[label][bitmask & 15], tables.high[label][bitmask >> 4]);
-}
+int BitmaskSimilarity(int label, std::uint8_t bitmask) { return kSimilarityRows[label][bitmask]; }
 
 std::array<cv::Mat, kOrientationCount> ComputeResponseMaps(const cv::Mat& spread, SimdPath path) {
   if (!spread.empty() && spread.type() != CV_8UC1) {

@@ -22,6 +22,9 @@ int OrientationSimilarity(int label, int scene_label);
 
 // The best OrientationSimilarity of `label` with any orientation set in `bitmask` (0 for none).
 int BitmaskSimilarity(int label, std::uint8_t bitmask);
+// BitmaskSimilarity of `label` with every bitmask, indexed by the bitmask (256 entries): for
+// loops over many pixels with one label, without a call per pixel.
+const std::uint8_t* BitmaskSimilarityRow(int label);
 
 // For each template orientation l: per pixel, BitmaskSimilarity(l, spread pixel). Computed with
 // two 16-entry tables per orientation (low and high nibble of the bitmask, then max), which maps

@@ -467,9 +467,10 @@ std::vector<int> ExactAlignmentScores(const TemplateLevel& level, const SceneLev
   std::vector<int> scores(top_left_px.size(), 0);
   ForEachUsableFeature(level, scene, [&](const Feature& f) {
     const cv::Mat& quantized = scene.quantized[ModalityIndex(f.modality)];
+    const std::uint8_t* similarity = BitmaskSimilarityRow(f.label);
     for (std::size_t i = 0; i < top_left_px.size(); ++i) {
       const cv::Point& p = top_left_px[i];
-      scores[i] += BitmaskSimilarity(f.label, quantized.at<std::uint8_t>(p.y + f.y, p.x + f.x));
+      scores[i] += similarity[quantized.at<std::uint8_t>(p.y + f.y, p.x + f.x)];
     }
   });
   return scores;

@@ -30,6 +30,19 @@ TEST(ResponseMapsTest, BitmaskSimilarityTakesTheBestSetBit) {
   EXPECT_EQ(BitmaskSimilarity(2, 1 << 6), 0);
 }
 
+TEST(ResponseMapsTest, SimilarityRowIsTheBestSetBitForEveryBitmask) {
+  for (int label = 0; label < kOrientationCount; ++label) {
+    const std::uint8_t* row = BitmaskSimilarityRow(label);
+    for (int bitmask = 0; bitmask < 256; ++bitmask) {
+      int best = 0;
+      for (int bit = 0; bit < kOrientationCount; ++bit) {
+        if ((bitmask & (1 << bit)) != 0) best = std::max(best, OrientationSimilarity(label, bit));
+      }
+      ASSERT_EQ(row[bitmask], best) << "label " << label << ", bitmask " << bitmask;
+    }
+  }
+}
+
 TEST(ResponseMapsTest, EveryPathAgreesWithNaiveReference) {
   cv::RNG rng(11);
   for (const cv::Size size :
