@@ -208,15 +208,15 @@ CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius
 }
 
 // The top-level cells near some candidate point, as merged row spans in scan order (scored
-// without a pass over the whole grid). Cell (gx, gy) puts the template's anchor in
+// without a pass over the whole grid), into `spans`. Cell (gx, gy) puts the template's anchor in
 // [gx * span, (gx + 1) * span) + anchor, so it is near when the reach map says so there: cell
 // g is cell g - shift of one phase of the sampled reach map.
-std::vector<GridRowSpan> NearCells(const CandidateGeometry& geometry, const cv::Size& cells,
-                                   const CandidateArea& area) {
-  std::vector<GridRowSpan> spans;
+void NearCells(const CandidateGeometry& geometry, const cv::Size& cells, const CandidateArea& area,
+               std::vector<GridRowSpan>& spans) {
+  spans.clear();
   const int span = geometry.cell_span_px;
   const CandidateArea::Reach* reach = area.ForSpan(span);
-  if (reach == nullptr) return spans;
+  if (reach == nullptr) return;
   const cv::Point first = reach->origin - geometry.anchor;  // window corner of reach(0, 0)
   const cv::Point shift(FloorDiv(first.x, span), FloorDiv(first.y, span));
   const cv::Point residue = first - shift * span;
@@ -229,7 +229,6 @@ std::vector<GridRowSpan> NearCells(const CandidateGeometry& geometry, const cv::
     const int gx1 = std::min(run.last_column + shift.x, cells.width - 1);
     if (gx0 <= gx1) spans.push_back({gy, gx0, gx1});
   }
-  return spans;
 }
 
 // The hits, best first, at most `max_hits`.
@@ -375,8 +374,12 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& sc
   if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const CandidateGeometry geometry = Geometry(record, top, top_level);
-  const std::vector<GridRowSpan> scored =
-      area.restricted ? NearCells(geometry, cells, area) : AllCells(cells);
+  thread_local std::vector<GridRowSpan> scored;  // reused: one template after another
+  if (area.restricted) {
+    NearCells(geometry, cells, area, scored);
+  } else {
+    scored = AllCells(cells);
+  }
   if (scored.empty()) return result;
   thread_local std::vector<std::uint16_t> sums;
   ComputeSpanSimilarity(record.levels[top], top_level, top_summary, scored, sums, similarity);

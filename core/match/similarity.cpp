@@ -90,8 +90,8 @@ std::vector<GridRowSpan> ClipAndSortSpans(std::span<const GridRowSpan> spans,
 // short ones. Runs are packed one after the other into the sums buffer, each rounded up to whole
 // SIMD blocks, so the buffer is only as long as what is scored. `spans` must be sorted
 // (ClipAndSortSpans).
-std::vector<Run> GridRuns(std::span<const GridRowSpan> spans, int grid_width) {
-  std::vector<Run> runs;
+void GridRuns(std::span<const GridRowSpan> spans, int grid_width, std::vector<Run>& runs) {
+  runs.clear();
   int buffer_end = 0;
   for (const GridRowSpan& span : spans) {
     const int start = span.row * grid_width + span.first_column;
@@ -108,21 +108,20 @@ std::vector<Run> GridRuns(std::span<const GridRowSpan> spans, int grid_width) {
     runs.push_back(Run{buffer_end, start, end - start});
     buffer_end += RoundUpToSimdBlock(end - start);
   }
-  return runs;
 }
 
-// Where each span's first cell lies in the packed sums buffer of GridRuns(spans, grid_width).
-std::vector<int> SpanBufferOffsets(std::span<const GridRowSpan> spans, const std::vector<Run>& runs,
-                                   int grid_width) {
-  std::vector<int> offsets;
-  offsets.reserve(spans.size());
+// Appends each span's cells from `packed`, the buffer GridRuns(spans, grid_width) laid out, to
+// `sums`, span after span.
+void CopySpanSums(std::span<const GridRowSpan> spans, const std::vector<Run>& runs, int grid_width,
+                  const std::vector<std::uint16_t>& packed, std::vector<std::uint16_t>& sums) {
   std::size_t run = 0;
   for (const GridRowSpan& span : spans) {
     const int start = span.row * grid_width + span.first_column;
     while (start >= runs[run].source_offset + runs[run].length) ++run;
-    offsets.push_back(runs[run].buffer_offset + start - static_cast<int>(runs[run].source_offset));
+    const auto first = packed.begin() + runs[run].buffer_offset + start -
+                       static_cast<std::ptrdiff_t>(runs[run].source_offset);
+    sums.insert(sums.end(), first, first + (span.last_column - span.first_column + 1));
   }
-  return offsets;
 }
 
 // The non-zero stretches of a mask, as spans.
@@ -217,10 +216,12 @@ void ScoreCells(const TemplateLevel& level, const SceneLevel& scene,
     return;
   }
   const int grid_width = GridWidth(scene);
-  const std::vector<Run> runs = GridRuns(wanted, grid_width);
+  // Reused per thread: one template after another, allocating nothing.
+  thread_local std::vector<Run> runs;
+  GridRuns(wanted, grid_width, runs);
   const SpreadDivider divider(scene.spread_px);
-  std::vector<const std::uint8_t*> sources;
-  sources.reserve(summary.usable_features);
+  thread_local std::vector<const std::uint8_t*> sources;
+  sources.clear();
   ForEachUsableFeature(level, scene, [&](const Feature& f) {
     const LinearMemory& memory = scene.memories[ModalityIndex(f.modality)].orientations[f.label];
     const int qx = divider.Quotient(f.x);
@@ -231,12 +232,8 @@ void ScoreCells(const TemplateLevel& level, const SceneLevel& scene,
   const int buffer_size = runs.back().buffer_offset + RoundUpToSimdBlock(runs.back().length);
   thread_local std::vector<std::uint16_t> packed;
   AccumulateRuns(sources, runs, buffer_size, options, packed);
-  const std::vector<int> offsets = SpanBufferOffsets(wanted, runs, grid_width);
   sums.reserve(cell_count);
-  for (std::size_t i = 0; i < wanted.size(); ++i) {
-    const auto first = packed.begin() + offsets[i];
-    sums.insert(sums.end(), first, first + (wanted[i].last_column - wanted[i].first_column + 1));
-  }
+  CopySpanSums(wanted, runs, grid_width, packed, sums);
 }
 
 // ScoreCells laid out as the grid image.
