@@ -41,7 +41,11 @@ void AccumulateRuns(const std::vector<const std::uint8_t*>& sources, const std::
   const SimdPath path = ResolveSimdPath(options.simd);
   const int count = static_cast<int>(sources.size());
   const bool eight_bit = UseEightBits(options.accumulator, count);
-  sums.assign(static_cast<std::size_t>(buffer_size), 0);
+  if (eight_bit && count > 0) {
+    sums.resize(static_cast<std::size_t>(buffer_size));  // one chunk, copied over whole below
+  } else {
+    sums.assign(static_cast<std::size_t>(buffer_size), 0);
+  }
   thread_local std::vector<std::uint8_t> partial;
   partial.resize(static_cast<std::size_t>(buffer_size));
   const int chunk = eight_bit ? std::max(count, 1) : kMax8BitFeatures;
@@ -413,8 +417,11 @@ LocalSimilarity ComputeLocalSimilarity(const TemplateLevel& level, const SceneLe
     result.window_px = cv::Rect();
     return result;
   }
-  result.sums = cv::Mat::zeros(result.window_px.size(), CV_16UC1);
-  if (result.feature_count == 0) return result;
+  if (result.feature_count == 0) {
+    result.sums = cv::Mat::zeros(result.window_px.size(), CV_16UC1);
+    return result;
+  }
+  result.sums.create(result.window_px.size(), CV_16UC1);  // every row is copied in below
 
   const cv::Rect& window = result.window_px;
   const std::size_t step = CommonResponseStep(level, scene);
