@@ -81,8 +81,10 @@ std::array<cv::Mat, kOrientationCount> ComputeResponseMaps(const cv::Mat& spread
   std::array<cv::Mat, kOrientationCount> maps;
   if (spread.empty()) return maps;
   for (int label = 0; label < kOrientationCount; ++label) {
-    // The slack columns stay 0 so block reads past a row's end add nothing surprising.
-    cv::Mat storage = cv::Mat::zeros(spread.rows, spread.cols + kSimdBlock, CV_8UC1);
+    // The slack columns are 0 so block reads past a row's end add nothing surprising; the
+    // lookup below writes every other byte.
+    cv::Mat storage(spread.rows, spread.cols + kSimdBlock, CV_8UC1);
+    storage.colRange(spread.cols, storage.cols).setTo(0);
     maps[label] = storage.colRange(0, spread.cols);
     for (int y = 0; y < spread.rows; ++y) {
       LookupNibbleMax(spread.ptr<std::uint8_t>(y), maps[label].ptr<std::uint8_t>(y), spread.cols,

@@ -78,8 +78,12 @@ TEST(ResponseMapsTest, MapsKeepBlockSlackAfterEachRow) {
   const auto maps = ComputeResponseMaps(cv::Mat(5, 7, CV_8UC1, cv::Scalar(1)));
   for (const cv::Mat& map : maps) {
     EXPECT_GE(map.step[0], static_cast<std::size_t>(7 + kSimdBlock));
-    // The slack of the last row is addressable and zero.
-    EXPECT_EQ(map.ptr<std::uint8_t>(4)[7 + kSimdBlock - 1], 0);
+    // The slack of every row is addressable and zero.
+    for (int row = 0; row < map.rows; ++row) {
+      for (int column = 7; column < 7 + kSimdBlock; ++column) {
+        ASSERT_EQ(map.ptr<std::uint8_t>(row)[column], 0) << "row " << row << ", column " << column;
+      }
+    }
   }
 }
 
