@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include "features/depth_edges.h"
@@ -315,26 +316,33 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
                                                      features, search_region, options.match.simd);
   result.timings.prepare_ms = MsSince(stage_start);
 
-  for (std::size_t i = 0; i < objects_.size(); ++i) {
+  // The objects are matched side by side, then posed side by side: one object's serial steps
+  // (ranking, suppression, the last candidates of a parallel loop) overlap another's work. Each
+  // stage's time is the wall time of all objects together.
+  stage_start = Clock::now();
+  tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
     const ObjectEntry& entry = objects_[i];
     const TemplateArchive& archive = *archives_[entry.archive];
     const ArchiveObject& object = archive.Object(entry.obj_id);
     ObjectDiagnostics& diagnostics = result.diagnostics[i];
     diagnostics.obj_id = entry.obj_id;
-    stage_start = Clock::now();
-    if (prepared.region_px.empty()) {
-      // nothing survived coarse positioning: no match
-    } else if (scene_patch) {
-      diagnostics.matches = MatchKeptBlocks(prepared, archive, object, diagnostics, options);
-    } else {
-      diagnostics.matches = MatchEveryLayer(prepared, archive, object, options);
-    }
-    result.timings.match_ms += MsSince(stage_start);
+    if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
+    diagnostics.matches = scene_patch
+                              ? MatchKeptBlocks(prepared, archive, object, diagnostics, options)
+                              : MatchEveryLayer(prepared, archive, object, options);
+  });
+  result.timings.match_ms = MsSince(stage_start);
 
-    stage_start = Clock::now();
-    std::vector<Detection> detections =
-        PosesFromMatches(diagnostics.matches, archive, object, entry.pose_mesh, used, options);
-    result.timings.pose_ms += MsSince(stage_start);
+  stage_start = Clock::now();
+  std::vector<std::vector<Detection>> per_object(objects_.size());
+  tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
+    const ObjectEntry& entry = objects_[i];
+    const TemplateArchive& archive = *archives_[entry.archive];
+    per_object[i] = PosesFromMatches(result.diagnostics[i].matches, archive,
+                                     archive.Object(entry.obj_id), entry.pose_mesh, used, options);
+  });
+  result.timings.pose_ms = MsSince(stage_start);
+  for (std::vector<Detection>& detections : per_object) {
     for (Detection& detection : detections) result.detections.push_back(std::move(detection));
   }
   std::stable_sort(result.detections.begin(), result.detections.end(), RanksHigher);

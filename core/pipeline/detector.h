@@ -63,9 +63,10 @@ struct Detection {
   Verification verification;
 };
 
-// Wall time per stage, summed over objects. The per-frame parts of region division and coarse
-// positioning run side by side, each counting its own time, so the stages may add up to a little
-// more than the total.
+// Wall time per stage. Region division and coarse positioning are summed over objects, and
+// their per-frame parts run side by side, each counting its own time, so the stages may add up
+// to a little more than the total; matching and the pose stage run all objects side by side and
+// count the wall time of all of them together.
 struct StageTimings {
   double prepare_ms = 0.0;  // quantization, spreading, response maps, linear memories
   double regions_ms = 0.0;  // scene region division
