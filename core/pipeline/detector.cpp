@@ -84,6 +84,34 @@ void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera
 // Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
 // templates, only around its surviving detection points. Blocks of one layer share a search,
 // so that no template is scored twice.
+// The per-frame maps Scene-Patch's first two steps start from.
+struct DepthMaps {
+  cv::Mat cell_depth_mm;  // CellMedianDepth
+  cv::Mat edge_strength;  // DepthEdgeStrength of the hole-filled depth
+};
+
+// Region division and coarse positioning of one object, into `diagnostics`; adds their times
+// to `timings`.
+void DivideAndPosition(const ArchiveObject& object, const std::vector<LayerEdgeRange>& edge_ranges,
+                       const DepthMaps& maps, const Capture& capture,
+                       const FeatureOptions& features, const DetectorOptions& options,
+                       ObjectDiagnostics& diagnostics, StageTimings& timings) {
+  auto stage_start = Clock::now();
+  diagnostics.division =
+      DivideScene(maps.cell_depth_mm, capture.depth_mm.size(), object.layer_depths_mm,
+                  object.sphere.radius_mm, options.regions);
+  timings.regions_ms += MsSince(stage_start);
+
+  stage_start = Clock::now();
+  const float edge_threshold_mm =
+      features.depth_edge_fraction * static_cast<float>(object.bbox_size.maxCoeff());
+  const cv::Mat edges = DepthEdgeMaskFromStrength(maps.edge_strength, edge_threshold_mm);
+  diagnostics.coarse =
+      PositionCoarsely(diagnostics.division, capture.depth_mm, edges, capture.camera.fx,
+                       object.diameter_mm, edge_ranges, options.coarse);
+  timings.coarse_ms += MsSince(stage_start);
+}
+
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const TemplateArchive& archive, const ArchiveObject& object,
                                       const ObjectDiagnostics& diagnostics,
@@ -275,39 +303,31 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     // the part of the scene they point at is prepared for matching. They start from two
     // per-frame maps, computed side by side: the per-cell depths, and the depth-edge strength
     // with sensor holes filled (only the edge threshold depends on the object).
-    cv::Mat cell_depth_mm;
-    cv::Mat edge_strength;
+    DepthMaps maps;
     tbb::parallel_invoke(
         [&] {
           const auto task_start = Clock::now();
-          cell_depth_mm = CellMedianDepth(used.depth_mm, options.regions.cell_size_px);
+          maps.cell_depth_mm = CellMedianDepth(used.depth_mm, options.regions.cell_size_px);
           result.timings.regions_ms += MsSince(task_start);
         },
         [&] {
           const auto task_start = Clock::now();
-          edge_strength =
+          maps.edge_strength =
               DepthEdgeStrength(FillDepthHolesFromFar(used.depth_mm, options.coarse.hole_fill_px));
           result.timings.coarse_ms += MsSince(task_start);
         });
-    for (std::size_t i = 0; i < objects_.size(); ++i) {
+    // Then each object's division and positioning, side by side; their times are summed.
+    std::vector<StageTimings> object_timings(objects_.size());
+    tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
       const ObjectEntry& entry = objects_[i];
-      const ArchiveObject& object = archives_[entry.archive]->Object(entry.obj_id);
-      ObjectDiagnostics& diagnostics = result.diagnostics[i];
-      auto stage_start = Clock::now();
-      diagnostics.division =
-          DivideScene(cell_depth_mm, used.depth_mm.size(), object.layer_depths_mm,
-                      object.sphere.radius_mm, options.regions);
-      result.timings.regions_ms += MsSince(stage_start);
-
-      stage_start = Clock::now();
-      const float edge_threshold_mm =
-          features.depth_edge_fraction * static_cast<float>(object.bbox_size.maxCoeff());
-      const cv::Mat edges = DepthEdgeMaskFromStrength(edge_strength, edge_threshold_mm);
-      diagnostics.coarse =
-          PositionCoarsely(diagnostics.division, used.depth_mm, edges, used.camera.fx,
-                           object.diameter_mm, entry.edge_ranges, options.coarse);
-      search_region |= ReachOfKeptPoints(diagnostics.coarse, entry.largest_template, options);
-      result.timings.coarse_ms += MsSince(stage_start);
+      DivideAndPosition(archives_[entry.archive]->Object(entry.obj_id), entry.edge_ranges, maps,
+                        used, features, options, result.diagnostics[i], object_timings[i]);
+    });
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      search_region |=
+          ReachOfKeptPoints(result.diagnostics[i].coarse, objects_[i].largest_template, options);
+      result.timings.regions_ms += object_timings[i].regions_ms;
+      result.timings.coarse_ms += object_timings[i].coarse_ms;
     }
   }
 
