@@ -81,9 +81,6 @@ void ValidateCapture(const Capture& capture, const PinholeCamera& archive_camera
   }
 }
 
-// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
-// templates, only around its surviving detection points. Blocks of one layer share a search,
-// so that no template is scored twice.
 // The per-frame maps Scene-Patch's first two steps start from.
 struct DepthMaps {
   cv::Mat cell_depth_mm;  // CellMedianDepth
@@ -112,6 +109,9 @@ void DivideAndPosition(const ArchiveObject& object, const std::vector<LayerEdgeR
   timings.coarse_ms += MsSince(stage_start);
 }
 
+// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
+// templates, only around its surviving detection points. Blocks of one layer share a search,
+// so that no template is scored twice.
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const TemplateArchive& archive, const ArchiveObject& object,
                                       const ObjectDiagnostics& diagnostics,
