@@ -46,6 +46,17 @@ LinearMemory Linearize(const cv::Mat& response_map, int spread_px) {
   return linear;
 }
 
+LinearMemory ResponseAtLeast(const LinearMemory& memory, const LinearMemory& floors) {
+  if (floors.spread_px != memory.spread_px || floors.grid_size != memory.grid_size) {
+    throw Error("linear memories of different T or grids");
+  }
+  LinearMemory result;
+  result.spread_px = memory.spread_px;
+  result.grid_size = memory.grid_size;
+  cv::max(memory.memories, floors.memories, result.memories);  // the slack stays 0
+  return result;
+}
+
 LinearMemories Linearize(const std::array<cv::Mat, kOrientationCount>& response_maps,
                          int spread_px) {
   LinearMemories all;

@@ -44,4 +44,8 @@ struct LinearMemories {
 LinearMemories Linearize(const std::array<cv::Mat, kOrientationCount>& response_maps,
                          int spread_px);
 
+// The larger of the two responses everywhere: `floors` is another map of the same size,
+// linearized with the same T. Throws Error for another layout.
+LinearMemory ResponseAtLeast(const LinearMemory& memory, const LinearMemory& floors);
+
 }  // namespace layermod

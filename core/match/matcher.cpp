@@ -16,6 +16,7 @@
 #include <tuple>
 #include <utility>
 
+#include "match/occluders.h"
 #include "match/similarity.h"
 #include "util/error.h"
 
@@ -345,7 +346,8 @@ std::optional<Refined> RefineHit(const TemplateRecord& record,
 // One template's top-level hits and what refining them needs.
 struct TemplateHits {
   const TemplateRecord* record = nullptr;
-  int top = 0;  // top pyramid level scored
+  const Occluders* occluders = nullptr;  // TemplateSearch::occluders
+  int top = 0;                           // top pyramid level scored
   cv::Point half_box;
   std::vector<CoarseHit> hits;  // best first
 };
@@ -436,7 +438,8 @@ std::vector<std::vector<TemplateLevelSummary>> RefinedSummaries(
   return summaries;
 }
 
-// `summaries`: UsableLevels of the hit's template.
+// `summaries`: UsableLevels of the hit's template. With occluders, the features on them are
+// counted out of the level-0 score.
 std::optional<Candidate> RefineRankedHit(const TemplateHits& source,
                                          const std::vector<TemplateLevelSummary>& summaries,
                                          const CoarseHit& hit, const PreparedScene& scene,
@@ -444,12 +447,25 @@ std::optional<Candidate> RefineRankedHit(const TemplateHits& source,
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
   const std::optional<Refined> refined =
       RefineHit(*source.record, summaries, scene, source.top, hit, similarity);
-  const int level0_features = summaries.front().usable_features;
-  const int min_level0_sum = MinimumSumForPercent(options.threshold_percent, level0_features);
-  if (!refined || refined->sum < min_level0_sum) return std::nullopt;
+  if (!refined) return std::nullopt;
+  VisibleScore score{summaries.front().usable_features, 0, refined->sum};
+  if (source.occluders != nullptr) {
+    score = ScoreVisibleFeatures(source.record->levels[0], scene.Level(0),
+                                 source.occluders->masks.front(), refined->position_px);
+    if (score.Visible() < options.min_visible_share * static_cast<float>(score.features)) {
+      return std::nullopt;
+    }
+  }
+  if (score.sum < MinimumSumForPercent(options.threshold_percent, score.Visible())) {
+    return std::nullopt;
+  }
   Candidate candidate;
+  const float visible_share =
+      score.features > 0 ? static_cast<float>(score.Visible()) / static_cast<float>(score.features)
+                         : 0.0f;
   candidate.match = {refined->position_px.x, refined->position_px.y,
-                     SimilarityPercent(refined->sum, level0_features), source.record->id};
+                     SimilarityPercent(score.sum, score.Visible()), source.record->id,
+                     visible_share};
   candidate.obj_id = source.record->obj_id;
   candidate.centre_px = cv::Point2f(refined->position_px + source.half_box);
   return candidate;
@@ -528,6 +544,10 @@ void MatchOptions::Validate() const {
   if (!(tree_descend > 0.0f && tree_descend <= 1.0f)) {
     throw Error("tree descend share must be in (0, 1], got " + std::to_string(tree_descend));
   }
+  if (!(min_visible_share > 0.0f && min_visible_share <= 1.0f)) {
+    throw Error("match min_visible_share must be in (0, 1], got " +
+                std::to_string(min_visible_share));
+  }
   if (max_candidates_per_template < 1) {
     throw Error("match max_candidates_per_template must be >= 1, got " +
                 std::to_string(max_candidates_per_template));
@@ -558,6 +578,15 @@ PreparedScene::PreparedScene(const std::vector<std::array<cv::Mat, kModalityCoun
     levels_[level] = std::make_unique<LazyLevel>();
     levels_[level]->level = BuildSceneResponses(quantized[level], spread_px[level], simd);
   });
+}
+
+PreparedScene::PreparedScene(std::vector<SceneLevel> levels) {
+  levels_.resize(levels.size());
+  for (std::size_t level = 0; level < levels.size(); ++level) {
+    levels_[level] = std::make_unique<LazyLevel>();
+    levels_[level]->level = std::move(levels[level]);
+    levels_[level]->ready.store(levels_[level]->level.linearized, std::memory_order_release);
+  }
 }
 
 const SceneLevel& PreparedScene::Level(int level) const {
@@ -649,15 +678,24 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   if (scene.LevelCount() == 0) return {};
   // Any radius beyond the image diagonal reaches everything; clamping keeps the arithmetic small.
   const int radius_px = std::min(candidate_radius_px, 1 << 20);
+  // A template to score: where (its search's candidate area) and on which scene (with
+  // occluders, the one templates are ranked on).
+  struct Work {
+    const TemplateRecord* record = nullptr;
+    const CandidateArea* area = nullptr;
+    const PreparedScene* ranked = nullptr;
+    const Occluders* occluders = nullptr;
+  };
   std::vector<CandidateArea> areas;
-  std::vector<std::pair<const TemplateRecord*, const CandidateArea*>> work;
+  std::vector<Work> work;
   areas.reserve(searches.size());
   for (const TemplateSearch& search : searches) {
+    const PreparedScene& ranked = search.occluders == nullptr ? scene : search.occluders->ranked;
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
                         : MakeCandidateArea(*search.candidate_points, radius_px, scene));
-    for (const TemplateRecord* record : TemplatesToScore(search, areas.back(), scene, options)) {
-      work.emplace_back(record, &areas.back());
+    for (const TemplateRecord* record : TemplatesToScore(search, areas.back(), ranked, options)) {
+      work.push_back({record, &areas.back(), &ranked, search.occluders});
     }
   }
   // Two passes: every template scores its top level; then only the best hits over all
@@ -667,7 +705,8 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
                         per_template[i] =
-                            ScoreTopLevel(*work[i].first, scene, options, *work[i].second);
+                            ScoreTopLevel(*work[i].record, *work[i].ranked, options, *work[i].area);
+                        per_template[i].occluders = work[i].occluders;
                       }
                     });
   const std::vector<RankedHit> ranked = RankHits(per_template, options);

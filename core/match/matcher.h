@@ -52,6 +52,9 @@ struct MatchOptions {
   // Tree searches: the share of clusters whose members are all scored, best representatives
   // first. 1 scores every template, as the flat search does.
   float tree_descend = 0.15f;
+  // Searches with occluders (TemplateSearch::occluders): a match needs at least this share of its
+  // features off the occluders, and its similarity is that of those visible features.
+  float min_visible_share = 0.5f;
   SimdPath simd = SimdPath::kAuto;
 
   void Validate() const;  // throws Error naming the bad field
@@ -60,8 +63,11 @@ struct MatchOptions {
 struct RawMatch {
   int x = 0;  // level-0 top-left of the template box in scene pixels
   int y = 0;
-  float similarity_percent = 0.0f;  // at level 0: 100 * score / (4 * usable features)
+  // At level 0: 100 * score / (4 * usable features), over the visible features only where the
+  // search had occluders.
+  float similarity_percent = 0.0f;
   std::uint32_t template_id = 0;
+  float visible_share = 1.0f;  // of the usable level-0 features, those off occluders
 
   bool operator==(const RawMatch&) const = default;
 };
@@ -82,6 +88,9 @@ class PreparedScene {
   // (FeatureOptions::spread_px). Throws Error for fewer T than levels or invalid images.
   PreparedScene(const std::vector<std::array<cv::Mat, kModalityCount>>& quantized,
                 const std::vector<int>& spread_px, SimdPath simd = SimdPath::kAuto);
+  // Levels already turned into response maps (BuildSceneResponses), level 0 first; the linear
+  // memories of those not yet linearized are built on first use as above.
+  explicit PreparedScene(std::vector<SceneLevel> levels);
 
   int LevelCount() const { return static_cast<int>(levels_.size()); }
   // The level's responses (its linear memories only if already built).
@@ -129,10 +138,17 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 // cluster's representative at the top level with a threshold lowered by
 // kRepresentativeMarginPercent, then every member of the best MatchOptions::tree_descend share
 // of the clusters (by their representative's best top-level similarity); the rest as above.
+//
+// With occluders (match/occluders.h: where the scene lies in front of the object), the search's
+// templates are ranked on its scene with partial credit for hidden features, and at level 0 the
+// hidden features are counted out: a match needs MatchOptions::min_visible_share of its
+// features visible and the threshold over those.
+struct Occluders;
 struct TemplateSearch {
   std::span<const TemplateRecord> templates;
   const std::vector<cv::Point>* candidate_points = nullptr;
   std::span<const ViewCluster> clusters;  // empty: every template is scored
+  const Occluders* occluders = nullptr;   // nullptr: none
 };
 inline constexpr float kRepresentativeMarginPercent = 20.0f;
 std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,

@@ -5,14 +5,17 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include "features/depth_edges.h"
+#include "match/occluders.h"
 #include "mesh/vertex_clustering.h"
 #include "pipeline/detection_poses.h"
+#include "pipeline/layer_occluders.h"
 #include "pipeline/scene_preparation.h"
 #include "util/error.h"
 
@@ -109,11 +112,25 @@ void DivideAndPosition(const ArchiveObject& object, const std::vector<LayerEdgeR
   timings.coarse_ms += MsSince(stage_start);
 }
 
+// Where templates anchored within `radius_px` of some point can put features: a template box
+// (at most `largest_template`) around each point, grown by the radius.
+cv::Rect ReachOfPoints(const std::vector<cv::Point>& points, const cv::Size& largest_template,
+                       int radius_px) {
+  cv::Rect reach;
+  const cv::Point half(largest_template.width + radius_px, largest_template.height + radius_px);
+  for (const cv::Point& point : points) {
+    reach |= cv::Rect(point - half, point + half + cv::Point(1, 1));
+  }
+  return reach;
+}
+
 // Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
 // templates, only around its surviving detection points. Blocks of one layer share a search,
-// so that no template is scored twice.
+// so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
+// nearer than the object can be at that layer as occluders.
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const TemplateArchive& archive, const ArchiveObject& object,
+                                      const cv::Size& largest_template,
                                       const ObjectDiagnostics& diagnostics,
                                       const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
@@ -128,10 +145,21 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
     }
   }
   std::vector<TemplateSearch> searches;
+  std::vector<std::optional<Occluders>> occluders(points_by_layer.size());
   searches.reserve(points_by_layer.size());
   for (const auto& [layer, points] : points_by_layer) {
     searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points,
                         archive.ViewClustersOf(object.obj_id, layer)});
+    if (options.occlusion == OcclusionMode::kIgnore) continue;
+    std::vector<cv::Mat> masks = OccludersNearerThan(
+        prepared,
+        NearestSurfaceMm(object.layer_depths_mm[static_cast<std::size_t>(layer)],
+                         object.sphere.radius_mm),
+        ReachOfPoints(points, largest_template, options.coarse.point_step_px));
+    if (masks.empty()) continue;
+    std::optional<Occluders>& layer_occluders = occluders[searches.size() - 1];
+    layer_occluders = MakeOccluders(prepared.scene, std::move(masks));
+    searches.back().occluders = &*layer_occluders;
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
@@ -202,6 +230,23 @@ std::string_view ModeName(DetectionMode mode) {
       return "color-only";
   }
   return "?";
+}
+
+std::string_view OcclusionModeName(OcclusionMode mode) {
+  switch (mode) {
+    case OcclusionMode::kAware:
+      return "aware";
+    case OcclusionMode::kIgnore:
+      return "ignore";
+  }
+  return "?";
+}
+
+OcclusionMode ParseOcclusionMode(std::string_view text) {
+  for (OcclusionMode mode : {OcclusionMode::kAware, OcclusionMode::kIgnore}) {
+    if (text == OcclusionModeName(mode)) return mode;
+  }
+  throw Error("occlusion: expected aware or ignore, got '" + std::string(text) + "'");
 }
 
 DetectionMode ParseDetectionMode(std::string_view text) {
@@ -348,7 +393,8 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     diagnostics.obj_id = entry.obj_id;
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
     diagnostics.matches = scene_patch
-                              ? MatchKeptBlocks(prepared, archive, object, diagnostics, options)
+                              ? MatchKeptBlocks(prepared, archive, object, entry.largest_template,
+                                                diagnostics, options)
                               : MatchEveryLayer(prepared, archive, object, options);
   });
   result.timings.match_ms = MsSince(stage_start);

@@ -25,12 +25,21 @@ enum class DetectionMode {
 std::string_view ModeName(DetectionMode mode);
 DetectionMode ParseDetectionMode(std::string_view text);  // throws Error
 
+// Whether Scene-Patch matching sets apart what lies in front of the object (match/occluders.h).
+enum class OcclusionMode {
+  kAware,   // features on occluders are counted out of a template's score
+  kIgnore,  // every feature counts (LineMOD as published)
+};
+std::string_view OcclusionModeName(OcclusionMode mode);
+OcclusionMode ParseOcclusionMode(std::string_view text);  // throws Error
+
 struct DetectorOptions {
   DetectionMode mode = DetectionMode::kScenePatch;
   RegionDivisionOptions regions;
   CoarsePositioningOptions coarse;
   MatchOptions match;
-  int max_instances = 1;     // detections kept per object
+  OcclusionMode occlusion = OcclusionMode::kIgnore;  // aware: see match/occluders.h
+  int max_instances = 1;                             // detections kept per object
   int pose_candidates = 12;  // best raw matches per object that get a pose and a verification
   // Detections less confident (pipeline/confidence.h) are not reported. 0.8 keeps precision at
   // or above 98 % with at most 0.2 % of absent parts detected on the sets in docs/RESULTS.md.

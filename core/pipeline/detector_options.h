@@ -51,6 +51,13 @@ struct OptionChoices<TemplateSearchMode> {
   static std::string_view Name(TemplateSearchMode search) { return SearchModeName(search); }
   static TemplateSearchMode Parse(std::string_view text) { return ParseSearchMode(text); }
 };
+template <>
+struct OptionChoices<OcclusionMode> {
+  static constexpr bool kIsChoice = true;
+  static constexpr std::array kValues = {OcclusionMode::kAware, OcclusionMode::kIgnore};
+  static std::string_view Name(OcclusionMode mode) { return OcclusionModeName(mode); }
+  static OcclusionMode Parse(std::string_view text) { return ParseOcclusionMode(text); }
+};
 template <typename T>
 inline constexpr bool kIsChoiceOption = OptionChoices<T>::kIsChoice;
 
@@ -64,7 +71,8 @@ std::vector<std::string> ChoiceNames() {
 }
 
 // Calls visitor(field, value&) for every setting of `options`, in table order. `value` is an
-// int&, float&, double& or a choice (kIsChoiceOption: DetectionMode&, TemplateSearchMode&).
+// int&, float&, double& or a choice (kIsChoiceOption: DetectionMode&, TemplateSearchMode&,
+// OcclusionMode&).
 template <typename Options, typename Visitor>
 void VisitDetectorOptions(Options& options, Visitor&& visitor) {
   using G = std::string_view;
@@ -113,6 +121,16 @@ void VisitDetectorOptions(Options& options, Visitor&& visitor) {
                               "tree (1 = flat search)",
                               matching, 0.001, 1},
           options.match.tree_descend);
+  visitor(DetectorOptionField{"occlusion",
+                              "aware (features on what lies in front of the part are counted "
+                              "out of its score) or ignore",
+                              matching, 0, 0},
+          options.occlusion);
+  visitor(DetectorOptionField{"min_visible_share",
+                              "Share of a match's features that must lie off occluders "
+                              "(occlusion aware)",
+                              matching, 0.01, 1},
+          options.match.min_visible_share);
   visitor(DetectorOptionField{"blocks", "Scene blocks kept by coarse positioning (0 = all)", coarse,
                               0, 1000},
           options.coarse.max_blocks);

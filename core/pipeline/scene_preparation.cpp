@@ -14,12 +14,14 @@ namespace layermod {
 
 namespace {
 
+// The scene's pyramid, prepared; its depth levels into `depths` (empty Mats without depth).
 PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                         const PinholeCamera& camera, cv::Point offset_px,
-                        const FeatureOptions& features, SimdPath simd) {
+                        const FeatureOptions& features, SimdPath simd,
+                        std::vector<cv::Mat>& depths) {
   const auto levels = static_cast<std::size_t>(features.pyramid_levels);
   std::vector<cv::Mat> colors(levels);
-  std::vector<cv::Mat> depths(levels);
+  depths.assign(levels, cv::Mat());
   for (std::size_t level = 0; level < levels; ++level) {
     colors[level] = level == 0 ? color_bgr : DownsampleColor(colors[level - 1]);
     if (!depth_mm.empty()) {
@@ -52,7 +54,8 @@ PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
 PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            const PinholeCamera& camera, const FeatureOptions& features,
                            SimdPath simd) {
-  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd);
+  std::vector<cv::Mat> depths;
+  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd, depths);
 }
 
 int RegionAlignmentPx(const FeatureOptions& features) {
@@ -74,7 +77,14 @@ PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth
   if (aligned.empty()) return result;
   result.region_px = aligned;
   const cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(aligned);
-  result.scene = PrepareAt(color_bgr(aligned), depth, camera, aligned.tl(), features, simd);
+  result.scene = PrepareAt(color_bgr(aligned), depth, camera, aligned.tl(), features, simd,
+                           result.depth_levels_mm);
+  if (depth.empty()) result.depth_levels_mm.clear();
+  for (cv::Mat& level : result.depth_levels_mm) {
+    cv::Mat whole_mm;
+    level.convertTo(whole_mm, CV_16U);  // rounds; negative and NaN become 0
+    level = whole_mm;
+  }
   return result;
 }
 

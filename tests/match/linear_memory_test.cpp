@@ -54,6 +54,22 @@ TEST(LinearMemoryTest, LinearizesAllOrientationsOfAModality) {
   EXPECT_THROW(Linearize(maps, 5), Error);
 }
 
+TEST(LinearMemoryTest, ResponsesAtLeastFloorsAreThoseOfThePixelwiseMaximum) {
+  cv::RNG rng(23);
+  const cv::Mat map = test::RandomBytes({97, 61}, rng);
+  cv::Mat floors = cv::Mat::zeros(map.size(), CV_8UC1);
+  floors(cv::Rect(40, 10, 30, 51)).setTo(3);
+  floors.at<std::uint8_t>(0, 0) = 200;
+  floors.at<std::uint8_t>(60, 96) = 3;
+  cv::Mat maximum;
+  cv::max(map, floors, maximum);
+  const LinearMemory linear = Linearize(map, 5);
+  ExpectNaiveLayout(maximum, 5, ResponseAtLeast(linear, Linearize(floors, 5)));
+  ExpectNaiveLayout(map, 5, linear);  // the original stays
+  EXPECT_THROW(ResponseAtLeast(linear, Linearize(floors, 4)), Error);
+  EXPECT_THROW(ResponseAtLeast(linear, Linearize(floors(cv::Rect(0, 0, 90, 61)), 5)), Error);
+}
+
 TEST(LinearMemoryTest, EmptyMapGivesEmptyGridAndBadArgumentsThrow) {
   const LinearMemory empty = Linearize(cv::Mat(), 4);
   EXPECT_EQ(empty.CellCount(), 0);

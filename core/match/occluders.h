@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// Occlusion-aware matching. Scene points nearer to the camera than any surface of the object can
+// be (at the depth layer a template set was trained for) belong to an occluder. A template whose
+// features fall on one has not failed to match there: those features are neither matched nor
+// missed.
+//
+// Where templates are ranked (scored on the grid of their top pyramid level), a feature on an
+// occluder scores at least kHiddenFeatureScore whatever its orientation: about what the visible
+// features of a right template score on average, so that a partly hidden part ranks about as it
+// would in full view, and a template over an occluder alone ranks below right matches. Hits are
+// refined on the scene as it is, and at level 0 the features on occluders are counted out: a
+// match's similarity is that of its visible features, and it needs MatchOptions::min_visible_share
+// of them (RawMatch::visible_share).
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "features/feature.h"
+#include "match/matcher.h"
+#include "match/scene_level.h"
+
+namespace layermod {
+
+inline constexpr int kHiddenFeatureScore = 3;  // of kMaxFeatureScore
+
+// What a search with occluders needs (TemplateSearch::occluders).
+struct Occluders {
+  std::vector<cv::Mat> masks;  // per level, CV_8UC1 of its size, non-zero at occluder pixels
+  // The scene templates are ranked on: above level 0, its linear memories score at least
+  // kHiddenFeatureScore at occluder pixels for every feature (its response maps, which only
+  // refinement reads, are the scene's); level 0 (the top level only of templates without
+  // coarser features) as the scene is.
+  PreparedScene ranked;
+};
+
+// Throws Error unless there is one mask per level of `scene`, CV_8UC1 of that level's size.
+Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks);
+
+// A template level's features whose modality the scene has, at one position, split by an
+// occluder mask.
+struct VisibleScore {
+  int features = 0;  // usable features
+  int hidden = 0;    // on an occluder pixel
+  int sum = 0;       // the scene's responses at the others (kMaxFeatureScore each at most)
+
+  int Visible() const { return features - hidden; }
+};
+
+// VisibleScore of `level` with its top-left at `top_left_px` in `scene`; `occluders`: CV_8UC1
+// of the scene level's size, non-zero at occluder pixels. Features outside the scene count as
+// visible and score nothing. Throws Error for a mask of another size or type.
+VisibleScore ScoreVisibleFeatures(const TemplateLevel& level, const SceneLevel& scene,
+                                  const cv::Mat& occluders, const cv::Point& top_left_px);
+
+}  // namespace layermod

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#include "pipeline/layer_occluders.h"
+
+#include <opencv2/core.hpp>
+
+#include <cmath>
+
+namespace layermod {
+
+constexpr double kDepthNoiseShare = 0.02;
+
+double NearestSurfaceMm(double layer_depth_mm, double sphere_radius_mm) {
+  return layer_depth_mm * (1.0 - kDepthNoiseShare) - 1.5 * sphere_radius_mm;
+}
+
+std::vector<cv::Mat> OccludersNearerThan(const PreparedRegion& prepared, double nearest_surface_mm,
+                                         const cv::Rect& reach_px) {
+  if (prepared.depth_levels_mm.empty() || nearest_surface_mm <= 0.0) return {};
+  std::vector<cv::Mat> masks;
+  masks.reserve(prepared.depth_levels_mm.size());
+  for (std::size_t level = 0; level < prepared.depth_levels_mm.size(); ++level) {
+    const cv::Mat& depth = prepared.depth_levels_mm[level];
+    const int scale = 1 << level;
+    const cv::Rect reach = cv::Rect(cv::Point(reach_px.x / scale, reach_px.y / scale),
+                                    cv::Point((reach_px.br().x + scale - 1) / scale,
+                                              (reach_px.br().y + scale - 1) / scale)) &
+                           cv::Rect(cv::Point(0, 0), depth.size());
+    cv::Mat mask = cv::Mat::zeros(depth.size(), CV_8UC1);
+    if (!reach.empty()) {
+      // Whole millimetres from 1 (0 is no depth) to the last one nearer than the bound.
+      const double last_mm = std::ceil(nearest_surface_mm) - 1.0;
+      cv::Mat reached = mask(reach);
+      cv::inRange(depth(reach), 1.0, last_mm, reached);
+    }
+    masks.push_back(mask);
+  }
+  if (cv::countNonZero(masks.front()) == 0) return {};
+  return masks;
+}
+
+}  // namespace layermod
