@@ -71,7 +71,12 @@ double RankingScore(const Detection& detection, bool has_depth) {
   return detection.score * fit * fit * detection.verification.color_agreement;
 }
 
-bool RanksHigher(const Detection& a, const Detection& b) { return a.ranking > b.ranking; }
+bool RanksHigher(const Detection& a, const Detection& b) {
+  const bool likely_a = a.confidence >= kLikelyConfidence;
+  const bool likely_b = b.confidence >= kLikelyConfidence;
+  if (likely_a != likely_b) return likely_a;
+  return a.ranking > b.ranking;
+}
 
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,

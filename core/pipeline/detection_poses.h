@@ -16,11 +16,16 @@ namespace layermod {
 // picks the right one. score x depth_fit^2 x colour agreement, in percent; without depth the
 // fit counts as 1.
 double RankingScore(const Detection& detection, bool has_depth);
-// Best first by Detection::ranking (for std::stable_sort).
+// Detections the confidence model deems more likely right than wrong (confidence at least
+// kLikelyConfidence) come first, then each group by Detection::ranking, best first (for
+// std::stable_sort). The ranking alone let a pose the depth fits a little better but the model
+// gives no chance (a clutter surface of the right shape) win over a confident right one at
+// another place; the confidence alone ordered confident poses worse than the ranking does.
+inline constexpr double kLikelyConfidence = 0.5;
 bool RanksHigher(const Detection& a, const Detection& b);
 
 // Turns an object's raw matches (best first) into verified detections: initial pose from the
-// template, ICP against the depth (when present), verification; ranked best first by RankingScore;
+// template, ICP against the depth (when present), verification; ordered best first (RanksHigher);
 // duplicates of one instance (centres closer than the sphere radius) collapse to the best. At most
 // `options.max_instances`. ICP and verification render `pose_mesh`: the object's mesh, or a coarser
 // copy of it.

@@ -61,7 +61,7 @@ struct Detection {
   std::int32_t obj_id = 0;
   std::string name;
   float score = 0.0f;       // LineMOD similarity of the matched template, percent
-  double ranking = 0.0;     // what detections are ordered by (RankingScore), percent
+  double ranking = 0.0;     // what detections are ordered by (RankingScore, RanksHigher), percent
   double confidence = 0.0;  // how likely the pose is right, 0..1 (pipeline/confidence.h)
   Pose cam_from_model;
   std::uint32_t template_id = 0;
@@ -94,7 +94,7 @@ struct ObjectDiagnostics {
 };
 
 struct DetectionResult {
-  std::vector<Detection> detections;  // best first by `ranking`, over all objects
+  std::vector<Detection> detections;  // best first (RanksHigher), over all objects
   StageTimings timings;
   std::vector<ObjectDiagnostics> diagnostics;
 };

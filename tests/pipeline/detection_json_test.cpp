@@ -50,13 +50,22 @@ TEST(RankingTest, DepthFitOutweighsAFewPointsOfScore) {
   EXPECT_DOUBLE_EQ(RankingScore(MakeDetection(80.0f, 0.5, 0.5), true), 80.0 * 0.25 * 0.5);
 }
 
-TEST(RankingTest, OrdersByTheStoredRanking) {
+TEST(RankingTest, OrdersByTheStoredRankingWithinEachSideOfTheLikelyConfidence) {
   Detection a = MakeDetection(95.0f, 1.0, 1.0);
   Detection b = MakeDetection(70.0f, 1.0, 1.0);
   a.ranking = 10.0;
   b.ranking = 20.0;
-  EXPECT_TRUE(RanksHigher(b, a));
-  EXPECT_FALSE(RanksHigher(a, b));
+  for (const double confidence : {0.0, kLikelyConfidence - 0.01, kLikelyConfidence, 0.97}) {
+    a.confidence = confidence;
+    b.confidence = confidence;
+    EXPECT_TRUE(RanksHigher(b, a)) << confidence;
+    EXPECT_FALSE(RanksHigher(a, b)) << confidence;
+  }
+  // A likely right detection goes before an unlikely one, whatever their rankings.
+  a.confidence = kLikelyConfidence;
+  b.confidence = kLikelyConfidence - 0.01;
+  EXPECT_TRUE(RanksHigher(a, b));
+  EXPECT_FALSE(RanksHigher(b, a));
 }
 
 }  // namespace

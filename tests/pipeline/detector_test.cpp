@@ -11,6 +11,7 @@
 
 #include "bracket_frame.h"
 #include "eval_fixtures.h"
+#include "pipeline/detection_poses.h"
 #include "support/thrown.h"
 #include "util/error.h"
 
@@ -36,7 +37,7 @@ TEST(DetectorTest, FindsTheBracketInItsFrame) {
   ASSERT_EQ(result.diagnostics.size(), 1u);
   EXPECT_FALSE(result.diagnostics.front().division.blocks.empty());
   for (std::size_t i = 1; i < result.detections.size(); ++i) {
-    EXPECT_GE(result.detections[i - 1].ranking, result.detections[i].ranking);
+    EXPECT_FALSE(RanksHigher(result.detections[i], result.detections[i - 1]));
   }
 }
 
