@@ -11,6 +11,17 @@
 namespace layermod {
 namespace {
 
+// Every kPixelStep-th pixel of every kPixelStep-th row is judged: the measures are shares of
+// hundreds to thousands of silhouette pixels, and rendering and reading a quarter of them costs
+// a quarter. Pixel (x, y) of the sparse render (PinholeCamera::EveryNthPixel) is pixel
+// (kPixelStep * x, kPixelStep * y) of the capture.
+constexpr int kPixelStep = 2;
+
+// The capture's pixel under pixel (x, y) of the sparse render's region `roi`.
+cv::Point CapturePixel(const cv::Rect& roi, int x, int y) {
+  return {kPixelStep * (x + roi.x), kPixelStep * (y + roi.y)};
+}
+
 struct DepthCounts {
   int consistent = 0;
   int occluded = 0;
@@ -23,7 +34,7 @@ DepthCounts CompareDepth(const RenderedView& view, const cv::Mat& depth_mm, doub
   for (int y = 0; y < view.mask.rows; ++y) {
     for (int x = 0; x < view.mask.cols; ++x) {
       if (view.mask.at<std::uint8_t>(y, x) == 0) continue;
-      const float scene = depth_mm.at<float>(y + view.roi.y, x + view.roi.x);
+      const float scene = depth_mm.at<float>(CapturePixel(view.roi, x, y));
       if (scene <= 0.0f) continue;  // no measurement: no evidence either way
       const double difference = scene - view.depth_mm.at<float>(y, x);
       if (std::abs(difference) <= tolerance_mm) {
@@ -39,7 +50,7 @@ DepthCounts CompareDepth(const RenderedView& view, const cv::Mat& depth_mm, doub
   return counts;
 }
 
-constexpr int kRingPx = 4;  // width of the ring outside the silhouette
+constexpr int kRingPx = 2;  // width of the ring outside the silhouette, in sparse pixels
 
 // The view's mask and depth pasted into `area` (a rectangle of the image containing view.roi).
 void PasteView(const RenderedView& view, const cv::Rect& area, cv::Mat& mask, cv::Mat& depth) {
@@ -51,7 +62,8 @@ void PasteView(const RenderedView& view, const cv::Rect& area, cv::Mat& mask, cv
 }
 
 double SurfaceContinuation(const RenderedView& view, const cv::Mat& depth_mm, double tolerance_mm) {
-  const cv::Rect image(0, 0, depth_mm.cols, depth_mm.rows);
+  const cv::Rect image(0, 0, (depth_mm.cols + kPixelStep - 1) / kPixelStep,
+                       (depth_mm.rows + kPixelStep - 1) / kPixelStep);
   const cv::Rect area = cv::Rect(view.roi.x - kRingPx, view.roi.y - kRingPx,
                                  view.roi.width + 2 * kRingPx, view.roi.height + 2 * kRingPx) &
                         image;
@@ -67,7 +79,7 @@ double SurfaceContinuation(const RenderedView& view, const cv::Mat& depth_mm, do
   for (int y = 0; y < area.height; ++y) {
     for (int x = 0; x < area.width; ++x) {
       if (grown.at<std::uint8_t>(y, x) == 0 || mask.at<std::uint8_t>(y, x) != 0) continue;
-      const float scene = depth_mm.at<float>(y + area.y, x + area.x);
+      const float scene = depth_mm.at<float>(CapturePixel(area, x, y));
       if (scene <= 0.0f) continue;
       ++judged;
       if (std::abs(scene - nearby_depth.at<float>(y, x)) <= tolerance_mm) ++continued;
@@ -83,9 +95,15 @@ double HueDistanceDeg(int a, int b) {  // OpenCV hue is 0..179 for 0..358 degree
 
 double ColorAgreement(const RenderedView& view, const cv::Mat& color_bgr, double tolerance_deg) {
   if (color_bgr.empty()) return 1.0;
+  cv::Mat scene_bgr(view.roi.size(), CV_8UC3);
+  for (int y = 0; y < scene_bgr.rows; ++y) {
+    for (int x = 0; x < scene_bgr.cols; ++x) {
+      scene_bgr.at<cv::Vec3b>(y, x) = color_bgr.at<cv::Vec3b>(CapturePixel(view.roi, x, y));
+    }
+  }
   cv::Mat model_hsv, scene_hsv;
   cv::cvtColor(view.color, model_hsv, cv::COLOR_BGR2HSV);
-  cv::cvtColor(color_bgr(view.roi), scene_hsv, cv::COLOR_BGR2HSV);
+  cv::cvtColor(scene_bgr, scene_hsv, cv::COLOR_BGR2HSV);
   int judged = 0;
   int agreeing = 0;
   for (int y = 0; y < view.mask.rows; ++y) {
@@ -119,17 +137,17 @@ Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, con
                         const VerificationOptions& options) {
   options.Validate();
   Verification result;
-  const RenderedView view = RenderView(mesh, camera, pose);
+  const RenderedView view = RenderView(mesh, camera.EveryNthPixel(kPixelStep), pose);
   if (view.empty()) return result;
-  result.silhouette_px = cv::countNonZero(view.mask);
+  const int silhouette = cv::countNonZero(view.mask);
+  result.silhouette_px = silhouette * kPixelStep * kPixelStep;
   const bool has_depth = !depth_mm.empty();
   if (has_depth) {
     const DepthCounts counts = CompareDepth(view, depth_mm, options.depth_tolerance_mm);
     const int judged = counts.consistent + counts.contradicted;
     result.depth_inlier_ratio = judged > 0 ? static_cast<double>(counts.consistent) / judged : 0.0;
     result.depth_fit = judged > 0 ? counts.agreement / judged : 0.0;
-    result.visible_ratio =
-        static_cast<double>(counts.consistent + counts.occluded) / result.silhouette_px;
+    result.visible_ratio = static_cast<double>(counts.consistent + counts.occluded) / silhouette;
     const int measured = judged + counts.occluded;
     if (measured > 0) {
       result.occluded_ratio = static_cast<double>(counts.occluded) / measured;

@@ -36,7 +36,7 @@ struct Verification {
   // continues the model's nearby surface. A model laid over part of a larger surface (a wrong
   // template on a box, a wall, the table) has its outline where the scene has none.
   double surface_continuation = 0.0;
-  int silhouette_px = 0;
+  int silhouette_px = 0;  // about: counted on every second pixel of every second row
   bool accepted = false;
 };
 
@@ -44,6 +44,7 @@ struct Verification {
 // scene nearer than the model is an occluder (neither for nor against), a scene farther means the
 // object is not there. Colour check (Hinterstoisser ACCV 2012): hue agreement on pixels where
 // the model's colour is saturated. Without depth (empty `depth_mm`) only colour is judged.
+// Every second pixel of every second row is rendered and judged.
 Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, const Pose& pose,
                         const cv::Mat& depth_mm, const cv::Mat& color_bgr,
                         const VerificationOptions& options = {});
