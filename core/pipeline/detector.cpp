@@ -124,11 +124,31 @@ cv::Rect ReachOfPoints(const std::vector<cv::Point>& points, const cv::Size& lar
   return reach;
 }
 
+// The occluders of one layer's search around `points` (region pixels): what lies nearer than the
+// object can be at that layer, within reach of the templates anchored near the points; nullopt
+// where nothing does. `depth_levels_mm`: WholeMillimetreDepths of the prepared region.
+std::optional<Occluders> LayerOccluders(const PreparedRegion& prepared,
+                                        const std::vector<cv::Mat>& depth_levels_mm,
+                                        const ArchiveObject& object, int layer,
+                                        const std::vector<cv::Point>& points,
+                                        const cv::Size& largest_template,
+                                        const DetectorOptions& options) {
+  const double nearest_mm = NearestSurfaceMm(
+      object.layer_depths_mm[static_cast<std::size_t>(layer)], object.sphere.radius_mm);
+  std::vector<cv::Mat> masks =
+      OccludersNearerThan(depth_levels_mm, nearest_mm,
+                          ReachOfPoints(points, largest_template, options.coarse.point_step_px));
+  if (masks.empty()) return std::nullopt;
+  return MakeOccluders(prepared.scene, std::move(masks));
+}
+
 // Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
 // templates, only around its surviving detection points. Blocks of one layer share a search,
 // so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
 // nearer than the object can be at that layer as occluders.
+// `occluder_depths_mm`: WholeMillimetreDepths of the region when occlusion-aware, else empty.
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
+                                      const std::vector<cv::Mat>& occluder_depths_mm,
                                       const TemplateArchive& archive, const ArchiveObject& object,
                                       const cv::Size& largest_template,
                                       const ObjectDiagnostics& diagnostics,
@@ -150,16 +170,11 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
   for (const auto& [layer, points] : points_by_layer) {
     searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points,
                         archive.ViewClustersOf(object.obj_id, layer)});
-    if (options.occlusion == OcclusionMode::kIgnore) continue;
-    std::vector<cv::Mat> masks = OccludersNearerThan(
-        prepared,
-        NearestSurfaceMm(object.layer_depths_mm[static_cast<std::size_t>(layer)],
-                         object.sphere.radius_mm),
-        ReachOfPoints(points, largest_template, options.coarse.point_step_px));
-    if (masks.empty()) continue;
+    if (occluder_depths_mm.empty()) continue;
     std::optional<Occluders>& layer_occluders = occluders[searches.size() - 1];
-    layer_occluders = MakeOccluders(prepared.scene, std::move(masks));
-    searches.back().occluders = &*layer_occluders;
+    layer_occluders = LayerOccluders(prepared, occluder_depths_mm, object, layer, points,
+                                     largest_template, options);
+    if (layer_occluders) searches.back().occluders = &*layer_occluders;
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
@@ -208,14 +223,9 @@ cv::Size LargestTemplate(const TemplateArchive& archive, const ArchiveObject& ob
 cv::Rect ReachOfKeptPoints(const CoarsePositioning& coarse, const cv::Size& largest_template,
                            const DetectorOptions& options) {
   constexpr int kFilterMarginPx = 8;
-  const int reach_x = largest_template.width + options.coarse.point_step_px + kFilterMarginPx;
-  const int reach_y = largest_template.height + options.coarse.point_step_px + kFilterMarginPx;
-  cv::Rect reach;
-  for (const DetectionPoint& point : coarse.KeptPoints()) {
-    reach |= cv::Rect(point.pixel.x - reach_x, point.pixel.y - reach_y, 2 * reach_x + 1,
-                      2 * reach_y + 1);
-  }
-  return reach;
+  std::vector<cv::Point> pixels;
+  for (const DetectionPoint& point : coarse.KeptPoints()) pixels.push_back(point.pixel);
+  return ReachOfPoints(pixels, largest_template, options.coarse.point_step_px + kFilterMarginPx);
 }
 
 }  // namespace
@@ -379,6 +389,11 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   auto stage_start = Clock::now();
   const PreparedRegion prepared = PrepareSceneRegion(used.color, used.depth_mm, used.camera,
                                                      features, search_region, options.match.simd);
+  // Occlusion-aware matching compares the depth with each layer's bound in whole millimetres.
+  const std::vector<cv::Mat> occluder_depths_mm =
+      scene_patch && options.occlusion == OcclusionMode::kAware
+          ? WholeMillimetreDepths(prepared.depth_levels_mm)
+          : std::vector<cv::Mat>();
   result.timings.prepare_ms = MsSince(stage_start);
 
   // The objects are matched side by side, then posed side by side: one object's serial steps
@@ -393,8 +408,8 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     diagnostics.obj_id = entry.obj_id;
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
     diagnostics.matches = scene_patch
-                              ? MatchKeptBlocks(prepared, archive, object, entry.largest_template,
-                                                diagnostics, options)
+                              ? MatchKeptBlocks(prepared, occluder_depths_mm, archive, object,
+                                                entry.largest_template, diagnostics, options)
                               : MatchEveryLayer(prepared, archive, object, options);
   });
   result.timings.match_ms = MsSince(stage_start);

@@ -13,13 +13,21 @@ double NearestSurfaceMm(double layer_depth_mm, double sphere_radius_mm) {
   return layer_depth_mm * (1.0 - kDepthNoiseShare) - 1.5 * sphere_radius_mm;
 }
 
-std::vector<cv::Mat> OccludersNearerThan(const PreparedRegion& prepared, double nearest_surface_mm,
-                                         const cv::Rect& reach_px) {
-  if (prepared.depth_levels_mm.empty() || nearest_surface_mm <= 0.0) return {};
+std::vector<cv::Mat> WholeMillimetreDepths(const std::vector<cv::Mat>& depth_levels_mm) {
+  std::vector<cv::Mat> whole_mm(depth_levels_mm.size());
+  for (std::size_t level = 0; level < depth_levels_mm.size(); ++level) {
+    depth_levels_mm[level].convertTo(whole_mm[level], CV_16U);
+  }
+  return whole_mm;
+}
+
+std::vector<cv::Mat> OccludersNearerThan(const std::vector<cv::Mat>& depth_levels_mm,
+                                         double nearest_surface_mm, const cv::Rect& reach_px) {
+  if (depth_levels_mm.empty() || nearest_surface_mm <= 0.0) return {};
   std::vector<cv::Mat> masks;
-  masks.reserve(prepared.depth_levels_mm.size());
-  for (std::size_t level = 0; level < prepared.depth_levels_mm.size(); ++level) {
-    const cv::Mat& depth = prepared.depth_levels_mm[level];
+  masks.reserve(depth_levels_mm.size());
+  for (std::size_t level = 0; level < depth_levels_mm.size(); ++level) {
+    const cv::Mat& depth = depth_levels_mm[level];
     const int scale = 1 << level;
     const cv::Rect reach = cv::Rect(cv::Point(reach_px.x / scale, reach_px.y / scale),
                                     cv::Point((reach_px.br().x + scale - 1) / scale,

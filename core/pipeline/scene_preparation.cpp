@@ -80,11 +80,6 @@ PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth
   result.scene = PrepareAt(color_bgr(aligned), depth, camera, aligned.tl(), features, simd,
                            result.depth_levels_mm);
   if (depth.empty()) result.depth_levels_mm.clear();
-  for (cv::Mat& level : result.depth_levels_mm) {
-    cv::Mat whole_mm;
-    level.convertTo(whole_mm, CV_16U);  // rounds; negative and NaN become 0
-    level = whole_mm;
-  }
   return result;
 }
 

@@ -24,7 +24,7 @@ struct PreparedRegion {
   PreparedScene scene;
   cv::Rect region_px;  // the part prepared; empty when `region` missed the image
   // The region's depth at each pyramid level (nearest-neighbour downsampling), the size of
-  // that level's scene: CV_16U whole millimetres, 0 = no depth; empty without depth.
+  // that level's scene: CV_32F mm, 0 = no depth; empty without depth.
   std::vector<cv::Mat> depth_levels_mm;
 };
 PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
