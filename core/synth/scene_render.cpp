@@ -165,17 +165,53 @@ void PaintBackdrop(const SceneLayout& layout, const Backdrop& backdrop, SceneRen
   }
 }
 
-BopGtInfo ItemGtInfo(const SceneRender& render, std::size_t index, const cv::Mat& sensor_depth_mm) {
+WholeSilhouette ItemWholeSilhouette(const SceneLayout& layout, const PinholeCamera& camera,
+                                    std::size_t index) {
+  const PlacedItem& item = layout.items[index];
+  const Pose cam_from_item = layout.camera.cam_from_world * item.world_from_item;
+  const cv::Rect canvas(-camera.width, -camera.height, 3 * camera.width, 3 * camera.height);
+  const cv::Rect image(0, 0, camera.width, camera.height);
+  cv::Rect reach = canvas;  // the whole canvas unless every vertex is in front of the camera
+  if (std::all_of(
+          item.mesh->positions.begin(), item.mesh->positions.end(),
+          [&](const Eigen::Vector3f& p) { return (cam_from_item * p.cast<double>()).z() > 1.0; })) {
+    std::vector<cv::Point2f> projected;
+    projected.reserve(item.mesh->positions.size());
+    for (const Eigen::Vector3f& p : item.mesh->positions) {
+      const Eigen::Vector2d pixel = camera.Project(cam_from_item * p.cast<double>());
+      projected.emplace_back(static_cast<float>(pixel.x()), static_cast<float>(pixel.y()));
+    }
+    // One pixel of slack on every side: pixel centres sit at integer coordinates.
+    const cv::Rect box = cv::boundingRect(projected);
+    reach = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2) & canvas;
+  }
+  if (reach.empty()) return {};
+  PinholeCamera shifted = camera;
+  shifted.cx -= reach.x;
+  shifted.cy -= reach.y;
+  shifted.width = reach.width;
+  shifted.height = reach.height;
+  const RenderedView view =
+      RenderView(*item.mesh, shifted, cam_from_item, SceneRenderOptions(layout));
+  WholeSilhouette whole;
+  whole.pixels = cv::countNonZero(view.mask);
+  if (whole.pixels > 0) whole.box = cv::boundingRect(view.mask) + reach.tl() + view.roi.tl();
+  return whole;
+}
+
+BopGtInfo ItemGtInfo(const SceneRender& render, std::size_t index, const WholeSilhouette& whole,
+                     const cv::Mat& sensor_depth_mm) {
   const cv::Mat& silhouette = render.item_views[index].mask;
   const cv::Mat visible = render.item_index == static_cast<short>(index);
   BopGtInfo info;
-  info.bbox_obj = BoundingBoxOr(silhouette);
-  info.bbox_visib = BoundingBoxOr(visible);
-  info.px_count_all = cv::countNonZero(silhouette);
+  info.px_count_all = whole.pixels;
   info.px_count_visib = cv::countNonZero(visible);
   info.px_count_valid = cv::countNonZero(silhouette & (sensor_depth_mm > 0.0f));
   info.visib_fract =
       info.px_count_all > 0 ? static_cast<double>(info.px_count_visib) / info.px_count_all : 0.0;
+  // BOP's convention: both boxes are "no pixel" when nothing of the item is seen.
+  info.bbox_obj = info.px_count_visib > 0 ? whole.box : cv::Rect(-1, -1, -1, -1);
+  info.bbox_visib = BoundingBoxOr(visible);
   return info;
 }
 

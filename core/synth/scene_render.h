@@ -51,8 +51,23 @@ double VisibleFraction(const SceneRender& render, std::size_t index);
 // the items' soft shadows (cast by the light and contact shadows beneath them).
 void PaintBackdrop(const SceneLayout& layout, const Backdrop& backdrop, SceneRender& render);
 
-// BOP visibility of item `index`: silhouette and visible boxes and counts; px_count_valid
-// counts silhouette pixels where `sensor_depth_mm` > 0.
-BopGtInfo ItemGtInfo(const SceneRender& render, std::size_t index, const cv::Mat& sensor_depth_mm);
+// An item's whole silhouette, the part outside the image included: BOP counts px_count_all on a
+// canvas three times the image's size with the image in its middle (bop_toolkit's
+// calc_gt_info), so a part cut by the image border is not "fully visible".
+struct WholeSilhouette {
+  int pixels = 0;
+  cv::Rect box{-1, -1, -1, -1};  // in image coordinates; may reach outside the image
+};
+
+// Renders item `index` of `layout` alone on that canvas (only as much of it as the item's
+// projection reaches).
+WholeSilhouette ItemWholeSilhouette(const SceneLayout& layout, const PinholeCamera& camera,
+                                    std::size_t index);
+
+// BOP visibility of item `index`: px_count_all and bbox_obj from its whole silhouette,
+// px_count_visib and bbox_visib from the composite, px_count_valid the in-image silhouette pixels
+// where `sensor_depth_mm` > 0. visib_fract = px_count_visib / px_count_all.
+BopGtInfo ItemGtInfo(const SceneRender& render, std::size_t index, const WholeSilhouette& whole,
+                     const cv::Mat& sensor_depth_mm);
 
 }  // namespace layermod

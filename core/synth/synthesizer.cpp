@@ -148,7 +148,8 @@ std::string TooLargeMessage(const SynthModel& model, const SynthOptions& options
   return message.str();
 }
 
-void FillGroundTruth(const SceneLayout& layout, const SceneRender& render, SynthFrame& result) {
+void FillGroundTruth(const SceneLayout& layout, const SceneRender& render,
+                     const PinholeCamera& camera, SynthFrame& result) {
   BopFrame& frame = result.frame;
   for (std::size_t i = 0; i < layout.items.size(); ++i) {
     const PlacedItem& item = layout.items[i];
@@ -160,7 +161,8 @@ void FillGroundTruth(const SceneLayout& layout, const SceneRender& render, Synth
     gt.obj_id = item.obj_id;
     gt.cam_from_model = layout.camera.cam_from_world * item.world_from_item;
     frame.gt.push_back(gt);
-    frame.gt_info.push_back(ItemGtInfo(render, i, frame.depth_mm));
+    frame.gt_info.push_back(
+        ItemGtInfo(render, i, ItemWholeSilhouette(layout, camera, i), frame.depth_mm));
   }
   result.clutter_models = 0;
   for (const BopGroundTruth& gt : frame.gt) result.clutter_models += gt.obj_id != result.target_id;
@@ -218,7 +220,7 @@ SynthFrame SynthesizeFrame(const SynthContext& context, int index) {
   frame.depth_mm = ApplyDepthSensorModel(render.depth_mm, options.camera, options.noise, rng);
   frame.color = ApplyColorSensorModel(render.color, options.noise, rng);
   result.target_id = target_id;
-  FillGroundTruth(layout, render, result);
+  FillGroundTruth(layout, render, options.camera, result);
   result.clean_depth_mm = render.depth_mm;
   result.item_index = render.item_index;
   result.target_distance_mm = layout.camera.distance_mm;

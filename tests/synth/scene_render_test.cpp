@@ -71,14 +71,16 @@ TEST_F(SceneRenderTest, AnOccluderHidesPartOfTheTarget) {
   EXPECT_GT(visible, 0.05);
   EXPECT_LT(visible, 0.95);
   const cv::Mat no_depth = cv::Mat::zeros(render.depth_mm.size(), CV_32F);
-  const BopGtInfo info = ItemGtInfo(render, 0, render.depth_mm);
+  const WholeSilhouette whole = ItemWholeSilhouette(layout_, camera_, 0);
+  const BopGtInfo info = ItemGtInfo(render, 0, whole, render.depth_mm);
+  // Inside the image, the whole silhouette is the one rendered in the image.
   EXPECT_EQ(info.px_count_all, cv::countNonZero(render.item_views[0].mask));
   EXPECT_EQ(info.px_count_valid, info.px_count_all);
   EXPECT_EQ(info.px_count_visib, cv::countNonZero(render.item_index == 0));
   EXPECT_DOUBLE_EQ(info.visib_fract, visible);
   EXPECT_EQ(info.bbox_obj, cv::boundingRect(render.item_views[0].mask));
   EXPECT_LT(info.bbox_visib.area(), info.bbox_obj.area());
-  EXPECT_EQ(ItemGtInfo(render, 0, no_depth).px_count_valid, 0);
+  EXPECT_EQ(ItemGtInfo(render, 0, whole, no_depth).px_count_valid, 0);
 
   // Removing the occluder and recompositing restores the target.
   render.item_views.pop_back();
@@ -90,10 +92,35 @@ TEST_F(SceneRenderTest, ItemsOutsideTheImageHaveNoBox) {
   AddOccluder(5000.0);
   SceneRender render;
   RenderScene(layout_, backdrop_, camera_, render);
-  const BopGtInfo info = ItemGtInfo(render, 1, render.depth_mm);
-  EXPECT_EQ(info.px_count_all, 0);
+  const BopGtInfo info =
+      ItemGtInfo(render, 1, ItemWholeSilhouette(layout_, camera_, 1), render.depth_mm);
+  EXPECT_EQ(info.px_count_visib, 0);
   EXPECT_EQ(info.bbox_obj, cv::Rect(-1, -1, -1, -1));
+  EXPECT_EQ(info.bbox_visib, cv::Rect(-1, -1, -1, -1));
   EXPECT_EQ(info.visib_fract, 0.0);
+}
+
+// BOP counts a part cut by the image border against its whole silhouette: half of it in the
+// image is half visible, even with nothing in front of it.
+TEST_F(SceneRenderTest, APartCutByTheImageBorderIsPartlyVisible) {
+  const Eigen::Vector3d target = layout_.items[0].bound.centre;
+  layout_.camera.cam_from_world =
+      LookAtFrom(target, layout_.camera.centre_in_world, 0.0, camera_, {0.0, camera_.cy});
+  SceneRender render;
+  RenderScene(layout_, backdrop_, camera_, render);
+  const int in_image = cv::countNonZero(render.item_views[0].mask);
+  ASSERT_GT(in_image, 0);
+  EXPECT_DOUBLE_EQ(VisibleFraction(render, 0), 1.0);  // of what the image shows
+
+  const BopGtInfo info =
+      ItemGtInfo(render, 0, ItemWholeSilhouette(layout_, camera_, 0), render.depth_mm);
+  EXPECT_EQ(info.px_count_visib, in_image);
+  EXPECT_GT(info.px_count_all, in_image);
+  EXPECT_GT(info.visib_fract, 0.3);
+  EXPECT_LT(info.visib_fract, 0.7);
+  EXPECT_LT(info.bbox_obj.x, 0);  // the whole box reaches out of the image
+  EXPECT_EQ(info.bbox_visib.x, 0);
+  EXPECT_EQ(info.bbox_obj & info.bbox_visib, info.bbox_visib);
 }
 
 TEST_F(SceneRenderTest, ItemsCastShadowsOnTheTable) {
