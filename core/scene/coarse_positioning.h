@@ -17,9 +17,11 @@ struct CoarsePositioningOptions {
   // four objects) 2.0 found 6 more targets than 1.5 and lost none.
   float upper_factor = 2.0f;
   // Keep the blocks with most surviving points. The paper keeps 1; in clutter the part's block
-  // is often second to fourth (other objects of similar size, the table's far edge pass the edge
-  // test too): 5 found 5 more of 80 targets over 8 objects than 3, for about 20 % more time.
-  int max_blocks = 5;
+  // is often second to eighth (other objects of similar size, the table's far edge pass the edge
+  // test too, and a flat part lying on the table shares its depth band's block): 5 found 5 more
+  // of 80 targets over 8 objects than 3; 8 found 21 more of 1,335 than 5 on eight scene sets,
+  // for 2-4 % more time (docs/RESULTS.md, "Eight scene blocks").
+  int max_blocks = 8;
   int hole_fill_px = 8;  // sensor holes up to this wide are filled from the far side
                          // before edges are counted (see FillDepthHolesFromFar)
 
