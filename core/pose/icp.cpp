@@ -118,6 +118,24 @@ Eigen::Matrix<double, 6, 1> ClampStep(const Eigen::Matrix<double, 6, 1>& update,
   return update * factor;
 }
 
+// Point-to-plane steps with projective association shrink slowly along directions the data
+// barely constrains (a flat part turning in its plane): successive steps then point the same
+// way. As in Besl and McKay's accelerated ICP, such a step carries on part of the last one.
+constexpr double kMomentum = 0.9;
+constexpr double kSameDirectionCosine = 0.8;
+
+// Whether `update` keeps the direction of `previous` (rotations weighed as the motion of a
+// point 100 mm from the axis, as the convergence test does).
+bool KeepsDirection(const Eigen::Matrix<double, 6, 1>& update,
+                    const Eigen::Matrix<double, 6, 1>& previous) {
+  Eigen::Matrix<double, 6, 1> a = update;
+  Eigen::Matrix<double, 6, 1> b = previous;
+  a.head<3>() *= 100.0;
+  b.head<3>() *= 100.0;
+  const double norms = a.norm() * b.norm();
+  return norms > 0.0 && a.dot(b) >= kSameDirectionCosine * norms;
+}
+
 Eigen::Vector3d MeanPosition(const RenderMesh& mesh) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3f& position : mesh.positions) sum += position.cast<double>();
@@ -168,6 +186,7 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
   result.cam_from_model = initial;
   const int per_render = std::max(1, options.max_iterations / options.renders);
   std::vector<SurfaceSample> samples;
+  Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     if (iteration % per_render == 0) {
       samples = SampleVisibleSurface(mesh, camera, result.cam_from_model, options.sample_step_px);
@@ -180,7 +199,10 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
         SolveStep(samples, result.cam_from_model, camera, depth_mm, gate, options.huber_mm);
     result.iterations = iteration + 1;
     if (step.inliers < 6) break;
-    result.cam_from_model = ApplyUpdate(result.cam_from_model, ClampStep(step.update, options));
+    Eigen::Matrix<double, 6, 1> move = step.update;
+    if (KeepsDirection(step.update, velocity)) move += kMomentum * velocity;
+    velocity = ClampStep(move, options);
+    result.cam_from_model = ApplyUpdate(result.cam_from_model, velocity);
     const double motion_mm = step.update.tail<3>().norm() + step.update.head<3>().norm() * 100.0;
     if (motion_mm < options.convergence_mm && gate <= options.final_max_distance_mm) {
       result.converged = true;

@@ -21,6 +21,19 @@ TEST(IcpTest, RecoversAPerturbedPose) {
   EXPECT_LT(result.rmse_mm, 1.0);
 }
 
+// Turned in the plane of its base, the part gives point-to-plane ICP little to pull on: its
+// steps shrink slowly along that turn unless each carries on the last (accelerated ICP).
+TEST(IcpTest, RecoversATurnInThePlaneOfTheBase) {
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const Eigen::Vector3d base_normal = truth.R * Eigen::Vector3d::UnitZ();
+  const Pose start = test::Perturb(truth, 12.0, base_normal, {0.0, 0.0, 0.0});
+  const IcpResult result =
+      RefinePoseIcp(test::SampleRenderMesh(), test::VgaCamera(), scene.depth_mm, start);
+  EXPECT_LT(test::RotationErrorDeg(result.cam_from_model, truth), 1.0);
+  EXPECT_LT((result.cam_from_model.t - truth.t).norm(), 2.0);
+}
+
 TEST(IcpTest, ExactPoseStaysPut) {
   const Pose truth = test::SamplePose(1000.0);
   const test::TestScene scene = test::RenderTestScene(truth);
