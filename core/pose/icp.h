@@ -12,7 +12,9 @@
 namespace layermod {
 
 struct IcpOptions {
-  int max_iterations = 30;
+  // 45: with accelerated steps (icp.cpp) the extra iterations finish turns in the plane of a
+  // flat face; without them a longer ICP let wrong poses fit too (docs/NOTES.md).
+  int max_iterations = 45;
   int renders = 3;                        // visible-surface re-samplings during refinement
   double initial_max_distance_mm = 40.0;  // correspondence gate, shrinking towards...
   double final_max_distance_mm = 8.0;     // ... this
