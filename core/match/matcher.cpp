@@ -75,25 +75,39 @@ int FloorDiv(int value, int divisor) {
 // The highest level both the template and the scene have that can be scored together with every
 // level below it, i.e. up to the first level without a feature of a modality the scene has
 // (-1: none). Needs only one such feature per level.
-int UsableTopLevel(const TemplateRecord& record, const PreparedScene& scene) {
+// `facts`: the record's TemplateFacts, or nullptr to read its features.
+int UsableTopLevel(const TemplateRecord& record, const TemplateFacts* facts,
+                   const PreparedScene& scene) {
   const int available = std::min(static_cast<int>(record.levels.size()), scene.LevelCount());
   int top = -1;
   for (int level = 0; level < available; ++level) {
-    const std::vector<Feature>& features = record.levels[level].features;
     const SceneLevel& scene_level = scene.Level(level);
-    const bool usable = std::any_of(features.begin(), features.end(), [&](const Feature& feature) {
-      return ModalityIndex(feature.modality) < kModalityCount &&
-             scene_level.HasModality(feature.modality);
-    });
+    bool usable = false;
+    if (facts != nullptr) {
+      const auto& counts = (*facts)[static_cast<std::size_t>(level)].features_by_modality;
+      for (std::size_t m = 0; m < counts.size(); ++m) {
+        usable = usable || (counts[m] > 0 && scene_level.present[m]);
+      }
+    } else {
+      const std::vector<Feature>& features = record.levels[level].features;
+      usable = std::any_of(features.begin(), features.end(), [&](const Feature& feature) {
+        return ModalityIndex(feature.modality) < kModalityCount &&
+               scene_level.HasModality(feature.modality);
+      });
+    }
     if (!usable) break;
     top = level;
   }
   return top;
 }
 
-// SummarizeTemplateLevel of one level; throws Error naming the template for invalid features.
-TemplateLevelSummary SummarizeLevel(const TemplateRecord& record, int level,
-                                    const PreparedScene& scene) {
+// SummarizeTemplateLevel of one level (from `facts` when given); throws Error naming the
+// template for invalid features.
+TemplateLevelSummary SummarizeLevel(const TemplateRecord& record, const TemplateFacts* facts,
+                                    int level, const PreparedScene& scene) {
+  if (facts != nullptr) {
+    return SummarizeFacts((*facts)[static_cast<std::size_t>(level)], scene.Level(level));
+  }
   try {
     return SummarizeTemplateLevel(record.levels[level], scene.Level(level));
   } catch (const Error& error) {
@@ -103,11 +117,12 @@ TemplateLevelSummary SummarizeLevel(const TemplateRecord& record, int level,
 
 // The summaries of levels 0..UsableTopLevel (empty when none can be scored).
 std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
+                                               const TemplateFacts* facts,
                                                const PreparedScene& scene) {
   std::vector<TemplateLevelSummary> summaries;
-  const int top = UsableTopLevel(record, scene);
+  const int top = UsableTopLevel(record, facts, scene);
   for (int level = 0; level <= top; ++level) {
-    summaries.push_back(SummarizeLevel(record, level, scene));
+    summaries.push_back(SummarizeLevel(record, facts, level, scene));
   }
   return summaries;
 }
@@ -346,6 +361,7 @@ std::optional<Refined> RefineHit(const TemplateRecord& record,
 // One template's top-level hits and what refining them needs.
 struct TemplateHits {
   const TemplateRecord* record = nullptr;
+  const TemplateFacts* facts = nullptr;  // nullptr: read from the record's features
   const Occluders* occluders = nullptr;  // TemplateSearch::occluders
   int top = 0;                           // top pyramid level scored
   cv::Point half_box;
@@ -361,17 +377,19 @@ struct RankedHit {
   std::size_t hit = 0;     // index into its hits
 };
 
-TemplateHits ScoreTopLevel(const TemplateRecord& record, const PreparedScene& scene,
-                           const MatchOptions& options, const CandidateArea& area) {
+TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts* facts,
+                           const PreparedScene& scene, const MatchOptions& options,
+                           const CandidateArea& area) {
   TemplateHits result;
   result.record = &record;
+  result.facts = facts;
   if (record.status == TemplateStatus::kTooFewFeatures) return result;
   // Only the scored level is summarised (and its features checked) here: the levels below it
   // only for the templates whose hits get refined (RefinedSummaries).
-  const int top = UsableTopLevel(record, scene);
+  const int top = UsableTopLevel(record, facts, scene);
   if (top < 0) return result;
   const SceneLevel& top_level = scene.LinearizedLevel(top);
-  const TemplateLevelSummary top_summary = SummarizeLevel(record, top, scene);
+  const TemplateLevelSummary top_summary = SummarizeLevel(record, facts, top, scene);
   const cv::Size cells = GridPositionCount(top_summary.extent, top_level);
   if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
@@ -433,7 +451,8 @@ std::vector<std::vector<TemplateLevelSummary>> RefinedSummaries(
   sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
   std::vector<std::vector<TemplateLevelSummary>> summaries(per_template.size());
   tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t i) {
-    summaries[sources[i]] = UsableLevels(*per_template[sources[i]].record, scene);
+    const TemplateHits& source = per_template[sources[i]];
+    summaries[sources[i]] = UsableLevels(*source.record, source.facts, scene);
   });
   return summaries;
 }
@@ -608,6 +627,17 @@ const SceneLevel& PreparedScene::LinearizedLevel(int level) const {
   return lazy.level;
 }
 
+TemplateFacts TemplateFactsOf(const TemplateRecord& record) {
+  TemplateFacts facts;
+  facts.reserve(record.levels.size());
+  try {
+    for (const TemplateLevel& level : record.levels) facts.push_back(LevelFacts(level));
+  } catch (const Error& error) {
+    throw Error("template " + std::to_string(record.id) + ": " + error.what());
+  }
+  return facts;
+}
+
 std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      std::span<const TemplateRecord> templates,
                                      const MatchOptions& options,
@@ -620,6 +650,11 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 
 namespace {
 
+// The facts of template `index` of `search`, nullptr when the search has none.
+const TemplateFacts* FactsAt(const TemplateSearch& search, std::size_t index) {
+  return search.facts.empty() ? nullptr : &search.facts[index];
+}
+
 // Each cluster's best top-level similarity of its representative, with the threshold lowered
 // by kRepresentativeMarginPercent; -1 where it has no hit even so.
 std::vector<float> RepresentativeScores(const TemplateSearch& search, const CandidateArea& area,
@@ -630,23 +665,24 @@ std::vector<float> RepresentativeScores(const TemplateSearch& search, const Cand
   coarse.max_candidates_per_template = 1;  // the best position is all the ranking needs
   std::vector<float> best(search.clusters.size(), -1.0f);
   tbb::parallel_for(std::size_t{0}, search.clusters.size(), [&](std::size_t c) {
-    const TemplateRecord& representative = search.templates[search.clusters[c].representative];
-    const TemplateHits hits = ScoreTopLevel(representative, scene, coarse, area);
+    const std::uint32_t representative = search.clusters[c].representative;
+    const TemplateHits hits = ScoreTopLevel(search.templates[representative],
+                                            FactsAt(search, representative), scene, coarse, area);
     if (!hits.hits.empty()) best[c] = hits.hits.front().percent;
   });
   return best;
 }
 
-// The templates of `search` to score: all of them, or with view clusters the members of the
-// clusters whose representatives score best (see TemplateSearch).
-std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search,
-                                                    const CandidateArea& area,
-                                                    const PreparedScene& scene,
-                                                    const MatchOptions& options) {
-  std::vector<const TemplateRecord*> chosen;
+// The templates of `search` to score, as indices into search.templates: all of them, or with
+// view clusters the members of the clusters whose representatives score best (see
+// TemplateSearch).
+std::vector<std::size_t> TemplatesToScore(const TemplateSearch& search, const CandidateArea& area,
+                                          const PreparedScene& scene, const MatchOptions& options) {
+  std::vector<std::size_t> chosen;
   if (search.clusters.empty() || options.search == TemplateSearchMode::kFlat ||
       options.tree_descend >= 1.0f) {
-    for (const TemplateRecord& record : search.templates) chosen.push_back(&record);
+    chosen.resize(search.templates.size());
+    std::iota(chosen.begin(), chosen.end(), std::size_t{0});
     return chosen;
   }
   const std::vector<float> best = RepresentativeScores(search, area, scene, options);
@@ -658,9 +694,7 @@ std::vector<const TemplateRecord*> TemplatesToScore(const TemplateSearch& search
       order.size(),
       static_cast<std::size_t>(std::ceil(options.tree_descend * static_cast<float>(best.size()))));
   for (std::size_t k = 0; k < descended && best[order[k]] >= 0.0f; ++k) {
-    for (std::uint32_t member : search.clusters[order[k]].members) {
-      chosen.push_back(&search.templates[member]);
-    }
+    for (std::uint32_t member : search.clusters[order[k]].members) chosen.push_back(member);
   }
   return chosen;
 }
@@ -682,6 +716,7 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   // occluders, the one templates are ranked on).
   struct Work {
     const TemplateRecord* record = nullptr;
+    const TemplateFacts* facts = nullptr;
     const CandidateArea* area = nullptr;
     const PreparedScene* ranked = nullptr;
     const Occluders* occluders = nullptr;
@@ -694,8 +729,13 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
                         : MakeCandidateArea(*search.candidate_points, radius_px, scene));
-    for (const TemplateRecord* record : TemplatesToScore(search, areas.back(), ranked, options)) {
-      work.push_back({record, &areas.back(), &ranked, search.occluders});
+    if (!search.facts.empty() && search.facts.size() != search.templates.size()) {
+      throw Error("template search: " + std::to_string(search.facts.size()) + " facts for " +
+                  std::to_string(search.templates.size()) + " templates");
+    }
+    for (const std::size_t index : TemplatesToScore(search, areas.back(), ranked, options)) {
+      work.push_back({&search.templates[index], FactsAt(search, index), &areas.back(), &ranked,
+                      search.occluders});
     }
   }
   // Two passes: every template scores its top level; then only the best hits over all
@@ -704,8 +744,8 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        per_template[i] =
-                            ScoreTopLevel(*work[i].record, *work[i].ranked, options, *work[i].area);
+                        per_template[i] = ScoreTopLevel(*work[i].record, work[i].facts,
+                                                        *work[i].ranked, options, *work[i].area);
                         per_template[i].occluders = work[i].occluders;
                       }
                     });

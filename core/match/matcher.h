@@ -14,6 +14,7 @@
 
 #include "match/scene_level.h"
 #include "match/simd.h"
+#include "match/similarity.h"
 #include "templates/template_record.h"
 #include "templates/view_clusters.h"
 
@@ -143,13 +144,20 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 // templates are ranked on its scene with partial credit for hidden features, and at level 0 the
 // hidden features are counted out: a match needs MatchOptions::min_visible_share of its
 // features visible and the threshold over those.
+//
+// With facts (TemplateFactsOf of each template, worked out once by the caller), a frame reads
+// each scored template's extent and feature counts from them instead of from its features.
 struct Occluders;
+using TemplateFacts = std::vector<TemplateLevelFacts>;  // per pyramid level, level 0 first
 struct TemplateSearch {
   std::span<const TemplateRecord> templates;
   const std::vector<cv::Point>* candidate_points = nullptr;
-  std::span<const ViewCluster> clusters;  // empty: every template is scored
-  const Occluders* occluders = nullptr;   // nullptr: none
+  std::span<const ViewCluster> clusters;      // empty: every template is scored
+  const Occluders* occluders = nullptr;       // nullptr: none
+  std::span<const TemplateFacts> facts = {};  // parallel to `templates`, or empty
 };
+// LevelFacts of every level; throws Error naming the template for invalid features.
+TemplateFacts TemplateFactsOf(const TemplateRecord& record);
 inline constexpr float kRepresentativeMarginPercent = 20.0f;
 std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                                           std::span<const TemplateSearch> searches,

@@ -278,22 +278,36 @@ void CheckTemplateLevel(const TemplateLevel& level) {
   }
 }
 
-TemplateLevelSummary SummarizeTemplateLevel(const TemplateLevel& level, const SceneLevel& scene) {
+TemplateLevelFacts LevelFacts(const TemplateLevel& level) {
   if (level.features.size() > static_cast<std::size_t>(kMaxTemplateFeatures)) {
     CheckTemplateLevel(level);  // throws with the message
   }
-  TemplateLevelSummary summary;
-  summary.extent = cv::Size(std::max(level.width, 0), std::max(level.height, 0));
+  TemplateLevelFacts facts;
+  facts.extent = cv::Size(std::max(level.width, 0), std::max(level.height, 0));
   for (const Feature& feature : level.features) {
+    const int modality = ModalityIndex(feature.modality);
     if (feature.x < 0 || feature.y < 0 || feature.label >= kOrientationCount ||
-        ModalityIndex(feature.modality) >= kModalityCount) {
+        modality >= kModalityCount) {
       throw Error(InvalidFeatureMessage(level, feature));
     }
-    summary.extent.width = std::max(summary.extent.width, feature.x + 1);
-    summary.extent.height = std::max(summary.extent.height, feature.y + 1);
-    summary.usable_features += scene.HasModality(feature.modality) ? 1 : 0;
+    facts.extent.width = std::max(facts.extent.width, feature.x + 1);
+    facts.extent.height = std::max(facts.extent.height, feature.y + 1);
+    ++facts.features_by_modality[static_cast<std::size_t>(modality)];
+  }
+  return facts;
+}
+
+TemplateLevelSummary SummarizeFacts(const TemplateLevelFacts& facts, const SceneLevel& scene) {
+  TemplateLevelSummary summary;
+  summary.extent = facts.extent;
+  for (std::size_t m = 0; m < facts.features_by_modality.size(); ++m) {
+    if (scene.present[m]) summary.usable_features += facts.features_by_modality[m];
   }
   return summary;
+}
+
+TemplateLevelSummary SummarizeTemplateLevel(const TemplateLevel& level, const SceneLevel& scene) {
+  return SummarizeFacts(LevelFacts(level), scene);
 }
 
 cv::Size TemplateExtent(const TemplateLevel& level) {

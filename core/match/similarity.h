@@ -9,6 +9,8 @@
 // falls outside it; the spreading (spread.h) still lets a template touching the border be found.
 #pragma once
 
+#include <array>
+
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <span>
@@ -45,6 +47,17 @@ struct TemplateLevelSummary {
   cv::Size extent;          // TemplateExtent
 };
 TemplateLevelSummary SummarizeTemplateLevel(const TemplateLevel& level, const SceneLevel& scene);
+
+// What no frame changes in a level's summary: its extent and its features per modality. A
+// detector works these out once per template (LevelFacts checks the features as
+// CheckTemplateLevel does), so that a frame does not walk every scored template's features.
+struct TemplateLevelFacts {
+  cv::Size extent;                                         // TemplateExtent
+  std::array<int, kModalityCount> features_by_modality{};  // index ModalityIndex
+};
+TemplateLevelFacts LevelFacts(const TemplateLevel& level);
+// The summary against `scene`, from the facts: equal to SummarizeTemplateLevel's.
+TemplateLevelSummary SummarizeFacts(const TemplateLevelFacts& facts, const SceneLevel& scene);
 
 // The template's extent from its top-left: its box, grown to hold every feature.
 cv::Size TemplateExtent(const TemplateLevel& level);

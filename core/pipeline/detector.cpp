@@ -147,9 +147,29 @@ std::optional<Occluders> LayerOccluders(const PreparedRegion& prepared,
 // so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
 // nearer than the object can be at that layer as occluders.
 // `occluder_depths_mm`: WholeMillimetreDepths of the region when occlusion-aware, else empty.
+// TemplateFactsOf of every template of the object, in the order of TemplatesOf(obj_id).
+std::vector<TemplateFacts> ObjectFacts(const TemplateArchive& archive, std::int32_t obj_id) {
+  const std::span<const TemplateRecord> templates = archive.TemplatesOf(obj_id);
+  std::vector<TemplateFacts> facts(templates.size());
+  tbb::parallel_for(std::size_t{0}, templates.size(),
+                    [&](std::size_t i) { facts[i] = TemplateFactsOf(templates[i]); });
+  return facts;
+}
+
+// The search of one layer's templates, with their facts (`object_facts`: ObjectFacts).
+TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, int layer,
+                           std::span<const TemplateFacts> object_facts) {
+  const std::span<const TemplateRecord> templates = archive.TemplatesOf(obj_id, layer);
+  const auto first =
+      static_cast<std::size_t>(templates.data() - archive.TemplatesOf(obj_id).data());
+  return {templates, nullptr, archive.ViewClustersOf(obj_id, layer), nullptr,
+          object_facts.subspan(first, templates.size())};
+}
+
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const std::vector<cv::Mat>& occluder_depths_mm,
                                       const TemplateArchive& archive, const ArchiveObject& object,
+                                      std::span<const TemplateFacts> object_facts,
                                       const cv::Size& largest_template,
                                       const ObjectDiagnostics& diagnostics,
                                       const DetectorOptions& options) {
@@ -168,8 +188,8 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
   std::vector<std::optional<Occluders>> occluders(points_by_layer.size());
   searches.reserve(points_by_layer.size());
   for (const auto& [layer, points] : points_by_layer) {
-    searches.push_back({archive.TemplatesOf(object.obj_id, layer), &points,
-                        archive.ViewClustersOf(object.obj_id, layer)});
+    searches.push_back(LayerSearch(archive, object.obj_id, layer, object_facts));
+    searches.back().candidate_points = &points;
     if (occluder_depths_mm.empty()) continue;
     std::optional<Occluders>& layer_occluders = occluders[searches.size() - 1];
     layer_occluders = LayerOccluders(prepared, occluder_depths_mm, object, layer, points,
@@ -191,12 +211,11 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
 // the layer's view tree where it has one (as MatchTemplates over all of them otherwise).
 std::vector<RawMatch> MatchEveryLayer(const PreparedRegion& prepared,
                                       const TemplateArchive& archive, const ArchiveObject& object,
+                                      std::span<const TemplateFacts> object_facts,
                                       const DetectorOptions& options) {
   std::vector<TemplateSearch> searches;
   for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
-    const int index = static_cast<int>(layer);
-    searches.push_back({archive.TemplatesOf(object.obj_id, index), nullptr,
-                        archive.ViewClustersOf(object.obj_id, index)});
+    searches.push_back(LayerSearch(archive, object.obj_id, static_cast<int>(layer), object_facts));
   }
   return MatchTemplateGroups(prepared.scene, searches, options.match);
 }
@@ -322,7 +341,8 @@ void Detector::IndexObjects() {
       }
       objects_.push_back(
           {a, object.obj_id, EdgeRanges(archive, object), LargestTemplate(archive, object),
-           SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm)});
+           SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm),
+           ObjectFacts(archive, object.obj_id)});
     }
   }
 }
@@ -407,10 +427,10 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     ObjectDiagnostics& diagnostics = result.diagnostics[i];
     diagnostics.obj_id = entry.obj_id;
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
-    diagnostics.matches = scene_patch
-                              ? MatchKeptBlocks(prepared, occluder_depths_mm, archive, object,
-                                                entry.largest_template, diagnostics, options)
-                              : MatchEveryLayer(prepared, archive, object, options);
+    diagnostics.matches =
+        scene_patch ? MatchKeptBlocks(prepared, occluder_depths_mm, archive, object, entry.facts,
+                                      entry.largest_template, diagnostics, options)
+                    : MatchEveryLayer(prepared, archive, object, entry.facts, options);
   });
   result.timings.match_ms = MsSince(stage_start);
 

@@ -128,6 +128,7 @@ class Detector {
     std::vector<LayerEdgeRange> edge_ranges;  // per layer
     cv::Size largest_template;                // level-0 px, over all its templates
     RenderMesh pose_mesh;                     // the mesh ICP and verification render
+    std::vector<TemplateFacts> facts;         // of TemplatesOf(obj_id), in its order
   };
 
   void IndexObjects();  // fills objects_ from archives_; throws Error for inconsistent archives

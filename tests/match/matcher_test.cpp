@@ -254,6 +254,44 @@ TEST(MatcherTest, NothingToMatchGivesNoMatchesAndNoCrash) {
   EXPECT_TRUE(Match(Prepare(scene), {empty, no_levels, weak, huge}).empty());
 }
 
+// Facts worked out once per template give the matches that reading the features per frame
+// gives, on a scene with both modalities and on one with colour only.
+TEST(MatcherTest, TemplateFactsGiveTheSameMatches) {
+  cv::RNG rng(71);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  std::vector<TemplateRecord> records;
+  for (std::uint32_t id = 0; id < 6; ++id) {
+    const cv::Rect box(20 + 40 * static_cast<int>(id), 30 + 25 * static_cast<int>(id), 60, 50);
+    records.push_back(test::TemplateFromScene(scene, box, 63, id, rng));
+  }
+  std::vector<TemplateFacts> facts;
+  for (const TemplateRecord& record : records) facts.push_back(TemplateFactsOf(record));
+  for (const bool colour_only : {false, true}) {
+    if (colour_only) {
+      for (auto& level : scene.quantized) level[ModalityIndex(Modality::kDepthNormal)] = cv::Mat();
+    }
+    const PreparedScene prepared = Prepare(scene);
+    const std::vector<RawMatch> without = Match(prepared, records);
+    TemplateSearch search{records, nullptr, {}};
+    search.facts = facts;
+    const std::vector<RawMatch> with =
+        MatchTemplateGroups(prepared, std::span<const TemplateSearch>(&search, 1), {});
+    ASSERT_EQ(with.size(), without.size()) << colour_only;
+    ASSERT_FALSE(with.empty());
+    for (std::size_t i = 0; i < with.size(); ++i) {
+      EXPECT_EQ(with[i].template_id, without[i].template_id);
+      EXPECT_EQ(cv::Point(with[i].x, with[i].y), cv::Point(without[i].x, without[i].y));
+      EXPECT_EQ(with[i].similarity_percent, without[i].similarity_percent);
+    }
+  }
+  // Facts for another number of templates are refused.
+  TemplateSearch short_search{records, nullptr, {}};
+  short_search.facts = std::span<const TemplateFacts>(facts).first(2);
+  EXPECT_THROW(
+      MatchTemplateGroups(Prepare(scene), std::span<const TemplateSearch>(&short_search, 1), {}),
+      Error);
+}
+
 TEST(MatcherTest, BadInputsThrowClearErrors) {
   cv::RNG rng(69);
   test::TestScene scene = test::RandomScene({120, 90}, kDensity, rng);
@@ -262,6 +300,12 @@ TEST(MatcherTest, BadInputsThrowClearErrors) {
   record.levels[0].features[0].label = 9;
   try {
     Match(prepared, {record});
+    FAIL() << "expected Error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("template 42"), std::string::npos) << error.what();
+  }
+  try {
+    TemplateFactsOf(record);  // the same check, once per template
     FAIL() << "expected Error";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("template 42"), std::string::npos) << error.what();
