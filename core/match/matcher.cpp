@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <deque>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -75,25 +76,16 @@ int FloorDiv(int value, int divisor) {
 // The highest level both the template and the scene have that can be scored together with every
 // level below it, i.e. up to the first level without a feature of a modality the scene has
 // (-1: none). Needs only one such feature per level.
-// `facts`: the record's TemplateFacts, or nullptr to read its features.
-int UsableTopLevel(const TemplateRecord& record, const TemplateFacts* facts,
-                   const PreparedScene& scene) {
-  const int available = std::min(static_cast<int>(record.levels.size()), scene.LevelCount());
+// `facts`: TemplateFactsOf the template.
+int UsableTopLevel(const TemplateFacts& facts, const PreparedScene& scene) {
+  const int available = std::min(static_cast<int>(facts.size()), scene.LevelCount());
   int top = -1;
   for (int level = 0; level < available; ++level) {
     const SceneLevel& scene_level = scene.Level(level);
+    const auto& counts = facts[static_cast<std::size_t>(level)].features_by_modality;
     bool usable = false;
-    if (facts != nullptr) {
-      const auto& counts = (*facts)[static_cast<std::size_t>(level)].features_by_modality;
-      for (std::size_t m = 0; m < counts.size(); ++m) {
-        usable = usable || (counts[m] > 0 && scene_level.present[m]);
-      }
-    } else {
-      const std::vector<Feature>& features = record.levels[level].features;
-      usable = std::any_of(features.begin(), features.end(), [&](const Feature& feature) {
-        return ModalityIndex(feature.modality) < kModalityCount &&
-               scene_level.HasModality(feature.modality);
-      });
+    for (std::size_t m = 0; m < counts.size(); ++m) {
+      usable = usable || (counts[m] > 0 && scene_level.present[m]);
     }
     if (!usable) break;
     top = level;
@@ -101,28 +93,19 @@ int UsableTopLevel(const TemplateRecord& record, const TemplateFacts* facts,
   return top;
 }
 
-// SummarizeTemplateLevel of one level (from `facts` when given); throws Error naming the
-// template for invalid features.
-TemplateLevelSummary SummarizeLevel(const TemplateRecord& record, const TemplateFacts* facts,
-                                    int level, const PreparedScene& scene) {
-  if (facts != nullptr) {
-    return SummarizeFacts((*facts)[static_cast<std::size_t>(level)], scene.Level(level));
-  }
-  try {
-    return SummarizeTemplateLevel(record.levels[level], scene.Level(level));
-  } catch (const Error& error) {
-    throw Error("template " + std::to_string(record.id) + ": " + error.what());
-  }
+// The summary of one level against the scene's.
+TemplateLevelSummary SummarizeLevel(const TemplateFacts& facts, int level,
+                                    const PreparedScene& scene) {
+  return SummarizeFacts(facts[static_cast<std::size_t>(level)], scene.Level(level));
 }
 
 // The summaries of levels 0..UsableTopLevel (empty when none can be scored).
-std::vector<TemplateLevelSummary> UsableLevels(const TemplateRecord& record,
-                                               const TemplateFacts* facts,
+std::vector<TemplateLevelSummary> UsableLevels(const TemplateFacts& facts,
                                                const PreparedScene& scene) {
   std::vector<TemplateLevelSummary> summaries;
-  const int top = UsableTopLevel(record, facts, scene);
+  const int top = UsableTopLevel(facts, scene);
   for (int level = 0; level <= top; ++level) {
-    summaries.push_back(SummarizeLevel(record, facts, level, scene));
+    summaries.push_back(SummarizeLevel(facts, level, scene));
   }
   return summaries;
 }
@@ -361,7 +344,7 @@ std::optional<Refined> RefineHit(const TemplateRecord& record,
 // One template's top-level hits and what refining them needs.
 struct TemplateHits {
   const TemplateRecord* record = nullptr;
-  const TemplateFacts* facts = nullptr;  // nullptr: read from the record's features
+  const TemplateFacts* facts = nullptr;  // TemplateFactsOf the record
   const Occluders* occluders = nullptr;  // TemplateSearch::occluders
   int top = 0;                           // top pyramid level scored
   cv::Point half_box;
@@ -377,19 +360,19 @@ struct RankedHit {
   std::size_t hit = 0;     // index into its hits
 };
 
-TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts* facts,
+TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& facts,
                            const PreparedScene& scene, const MatchOptions& options,
                            const CandidateArea& area) {
   TemplateHits result;
   result.record = &record;
-  result.facts = facts;
+  result.facts = &facts;
   if (record.status == TemplateStatus::kTooFewFeatures) return result;
-  // Only the scored level is summarised (and its features checked) here: the levels below it
-  // only for the templates whose hits get refined (RefinedSummaries).
-  const int top = UsableTopLevel(record, facts, scene);
+  // Only the scored level is summarised here: the levels below it only for the templates whose
+  // hits get refined (RefinedSummaries).
+  const int top = UsableTopLevel(facts, scene);
   if (top < 0) return result;
   const SceneLevel& top_level = scene.LinearizedLevel(top);
-  const TemplateLevelSummary top_summary = SummarizeLevel(record, facts, top, scene);
+  const TemplateLevelSummary top_summary = SummarizeLevel(facts, top, scene);
   const cv::Size cells = GridPositionCount(top_summary.extent, top_level);
   if (cells.empty()) return result;
   const SimilarityOptions similarity{Accumulator::kAuto, options.simd};
@@ -451,8 +434,7 @@ std::vector<std::vector<TemplateLevelSummary>> RefinedSummaries(
   sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
   std::vector<std::vector<TemplateLevelSummary>> summaries(per_template.size());
   tbb::parallel_for(std::size_t{0}, sources.size(), [&](std::size_t i) {
-    const TemplateHits& source = per_template[sources[i]];
-    summaries[sources[i]] = UsableLevels(*source.record, source.facts, scene);
+    summaries[sources[i]] = UsableLevels(*per_template[sources[i]].facts, scene);
   });
   return summaries;
 }
@@ -638,6 +620,13 @@ TemplateFacts TemplateFactsOf(const TemplateRecord& record) {
   return facts;
 }
 
+std::vector<TemplateFacts> TemplateFactsOf(std::span<const TemplateRecord> templates) {
+  std::vector<TemplateFacts> facts(templates.size());
+  tbb::parallel_for(std::size_t{0}, templates.size(),
+                    [&](std::size_t i) { facts[i] = TemplateFactsOf(templates[i]); });
+  return facts;
+}
+
 std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      std::span<const TemplateRecord> templates,
                                      const MatchOptions& options,
@@ -650,9 +639,20 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 
 namespace {
 
-// The facts of template `index` of `search`, nullptr when the search has none.
-const TemplateFacts* FactsAt(const TemplateSearch& search, std::size_t index) {
-  return search.facts.empty() ? nullptr : &search.facts[index];
+// `searches`, each with the facts of its templates: those that come without get them worked
+// out here, into `worked_out`, so that scoring always reads facts.
+std::vector<TemplateSearch> WithFacts(std::span<const TemplateSearch> searches,
+                                      std::deque<std::vector<TemplateFacts>>& worked_out) {
+  std::vector<TemplateSearch> complete(searches.begin(), searches.end());
+  for (TemplateSearch& search : complete) {
+    if (search.facts.empty()) {
+      search.facts = worked_out.emplace_back(TemplateFactsOf(search.templates));
+    } else if (search.facts.size() != search.templates.size()) {
+      throw Error("template search: " + std::to_string(search.facts.size()) + " facts for " +
+                  std::to_string(search.templates.size()) + " templates");
+    }
+  }
+  return complete;
 }
 
 // Each cluster's best top-level similarity of its representative, with the threshold lowered
@@ -667,7 +667,7 @@ std::vector<float> RepresentativeScores(const TemplateSearch& search, const Cand
   tbb::parallel_for(std::size_t{0}, search.clusters.size(), [&](std::size_t c) {
     const std::uint32_t representative = search.clusters[c].representative;
     const TemplateHits hits = ScoreTopLevel(search.templates[representative],
-                                            FactsAt(search, representative), scene, coarse, area);
+                                            search.facts[representative], scene, coarse, area);
     if (!hits.hits.empty()) best[c] = hits.hits.front().percent;
   });
   return best;
@@ -721,20 +721,18 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
     const PreparedScene* ranked = nullptr;
     const Occluders* occluders = nullptr;
   };
+  std::deque<std::vector<TemplateFacts>> worked_out;
+  const std::vector<TemplateSearch> complete = WithFacts(searches, worked_out);
   std::vector<CandidateArea> areas;
   std::vector<Work> work;
-  areas.reserve(searches.size());
-  for (const TemplateSearch& search : searches) {
+  areas.reserve(complete.size());
+  for (const TemplateSearch& search : complete) {
     const PreparedScene& ranked = search.occluders == nullptr ? scene : search.occluders->ranked;
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
                         : MakeCandidateArea(*search.candidate_points, radius_px, scene));
-    if (!search.facts.empty() && search.facts.size() != search.templates.size()) {
-      throw Error("template search: " + std::to_string(search.facts.size()) + " facts for " +
-                  std::to_string(search.templates.size()) + " templates");
-    }
     for (const std::size_t index : TemplatesToScore(search, areas.back(), ranked, options)) {
-      work.push_back({&search.templates[index], FactsAt(search, index), &areas.back(), &ranked,
+      work.push_back({&search.templates[index], &search.facts[index], &areas.back(), &ranked,
                       search.occluders});
     }
   }
@@ -744,7 +742,7 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        per_template[i] = ScoreTopLevel(*work[i].record, work[i].facts,
+                        per_template[i] = ScoreTopLevel(*work[i].record, *work[i].facts,
                                                         *work[i].ranked, options, *work[i].area);
                         per_template[i].occluders = work[i].occluders;
                       }

@@ -145,8 +145,9 @@ std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
 // hidden features are counted out: a match needs MatchOptions::min_visible_share of its
 // features visible and the threshold over those.
 //
-// With facts (TemplateFactsOf of each template, worked out once by the caller), a frame reads
-// each scored template's extent and feature counts from them instead of from its features.
+// Scoring reads each template's extent and feature counts from its facts (TemplateFactsOf):
+// a caller that searches the same templates frame after frame works them out once and passes
+// them; a search without them gets them worked out on every call.
 struct Occluders;
 using TemplateFacts = std::vector<TemplateLevelFacts>;  // per pyramid level, level 0 first
 struct TemplateSearch {
@@ -158,6 +159,8 @@ struct TemplateSearch {
 };
 // LevelFacts of every level; throws Error naming the template for invalid features.
 TemplateFacts TemplateFactsOf(const TemplateRecord& record);
+// The facts of each template, in their order (in parallel).
+std::vector<TemplateFacts> TemplateFactsOf(std::span<const TemplateRecord> templates);
 inline constexpr float kRepresentativeMarginPercent = 20.0f;
 std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                                           std::span<const TemplateSearch> searches,

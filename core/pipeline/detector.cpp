@@ -142,21 +142,8 @@ std::optional<Occluders> LayerOccluders(const PreparedRegion& prepared,
   return MakeOccluders(prepared.scene, std::move(masks));
 }
 
-// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
-// templates, only around its surviving detection points. Blocks of one layer share a search,
-// so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
-// nearer than the object can be at that layer as occluders.
-// `occluder_depths_mm`: WholeMillimetreDepths of the region when occlusion-aware, else empty.
-// TemplateFactsOf of every template of the object, in the order of TemplatesOf(obj_id).
-std::vector<TemplateFacts> ObjectFacts(const TemplateArchive& archive, std::int32_t obj_id) {
-  const std::span<const TemplateRecord> templates = archive.TemplatesOf(obj_id);
-  std::vector<TemplateFacts> facts(templates.size());
-  tbb::parallel_for(std::size_t{0}, templates.size(),
-                    [&](std::size_t i) { facts[i] = TemplateFactsOf(templates[i]); });
-  return facts;
-}
-
-// The search of one layer's templates, with their facts (`object_facts`: ObjectFacts).
+// The search of one layer's templates, with their facts (`object_facts`: TemplateFactsOf the
+// object's templates, TemplatesOf(obj_id)).
 TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, int layer,
                            std::span<const TemplateFacts> object_facts) {
   const std::span<const TemplateRecord> templates = archive.TemplatesOf(obj_id, layer);
@@ -166,6 +153,11 @@ TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, 
           object_facts.subspan(first, templates.size())};
 }
 
+// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
+// templates, only around its surviving detection points. Blocks of one layer share a search,
+// so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
+// nearer than the object can be at that layer as occluders.
+// `occluder_depths_mm`: WholeMillimetreDepths of the region when occlusion-aware, else empty.
 std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
                                       const std::vector<cv::Mat>& occluder_depths_mm,
                                       const TemplateArchive& archive, const ArchiveObject& object,
@@ -342,7 +334,7 @@ void Detector::IndexObjects() {
       objects_.push_back(
           {a, object.obj_id, EdgeRanges(archive, object), LargestTemplate(archive, object),
            SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm),
-           ObjectFacts(archive, object.obj_id)});
+           TemplateFactsOf(archive.TemplatesOf(object.obj_id))});
     }
   }
 }

@@ -123,15 +123,17 @@ Eigen::Matrix<double, 6, 1> ClampStep(const Eigen::Matrix<double, 6, 1>& update,
 // way. As in Besl and McKay's accelerated ICP, such a step carries on part of the last one.
 constexpr double kMomentum = 0.9;
 constexpr double kSameDirectionCosine = 0.8;
+// Rotations and translations of an update compare as the motion of a point this far from the
+// rotation axis (the convergence test and the direction test).
+constexpr double kRotationArmMm = 100.0;
 
-// Whether `update` keeps the direction of `previous` (rotations weighed as the motion of a
-// point 100 mm from the axis, as the convergence test does).
+// Whether `update` keeps the direction of `previous`.
 bool KeepsDirection(const Eigen::Matrix<double, 6, 1>& update,
                     const Eigen::Matrix<double, 6, 1>& previous) {
   Eigen::Matrix<double, 6, 1> a = update;
   Eigen::Matrix<double, 6, 1> b = previous;
-  a.head<3>() *= 100.0;
-  b.head<3>() *= 100.0;
+  a.head<3>() *= kRotationArmMm;
+  b.head<3>() *= kRotationArmMm;
   const double norms = a.norm() * b.norm();
   return norms > 0.0 && a.dot(b) >= kSameDirectionCosine * norms;
 }
@@ -203,7 +205,8 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
     if (KeepsDirection(step.update, velocity)) move += kMomentum * velocity;
     velocity = ClampStep(move, options);
     result.cam_from_model = ApplyUpdate(result.cam_from_model, velocity);
-    const double motion_mm = step.update.tail<3>().norm() + step.update.head<3>().norm() * 100.0;
+    const double motion_mm =
+        step.update.tail<3>().norm() + step.update.head<3>().norm() * kRotationArmMm;
     if (motion_mm < options.convergence_mm && gate <= options.final_max_distance_mm) {
       result.converged = true;
       break;
