@@ -168,34 +168,27 @@ void PaintBackdrop(const SceneLayout& layout, const Backdrop& backdrop, SceneRen
 WholeSilhouette ItemWholeSilhouette(const SceneLayout& layout, const PinholeCamera& camera,
                                     std::size_t index) {
   const PlacedItem& item = layout.items[index];
-  const Pose cam_from_item = layout.camera.cam_from_world * item.world_from_item;
-  const cv::Rect canvas(-camera.width, -camera.height, 3 * camera.width, 3 * camera.height);
-  const cv::Rect image(0, 0, camera.width, camera.height);
-  cv::Rect reach = canvas;  // the whole canvas unless every vertex is in front of the camera
-  if (std::all_of(
-          item.mesh->positions.begin(), item.mesh->positions.end(),
-          [&](const Eigen::Vector3f& p) { return (cam_from_item * p.cast<double>()).z() > 1.0; })) {
-    std::vector<cv::Point2f> projected;
-    projected.reserve(item.mesh->positions.size());
-    for (const Eigen::Vector3f& p : item.mesh->positions) {
-      const Eigen::Vector2d pixel = camera.Project(cam_from_item * p.cast<double>());
-      projected.emplace_back(static_cast<float>(pixel.x()), static_cast<float>(pixel.y()));
-    }
-    // One pixel of slack on every side: pixel centres sit at integer coordinates.
-    const cv::Rect box = cv::boundingRect(projected);
-    reach = cv::Rect(box.x - 1, box.y - 1, box.width + 2, box.height + 2) & canvas;
-  }
-  if (reach.empty()) return {};
-  PinholeCamera shifted = camera;
-  shifted.cx -= reach.x;
-  shifted.cy -= reach.y;
-  shifted.width = reach.width;
-  shifted.height = reach.height;
+  // The canvas: the image in the middle of one three times its size.
+  PinholeCamera canvas = camera;
+  canvas.cx += camera.width;
+  canvas.cy += camera.height;
+  canvas.width = 3 * camera.width;
+  canvas.height = 3 * camera.height;
+  RenderOptions options = SceneRenderOptions(layout);
+  options.window = RenderWindow::kObjectOnly;  // only the item's box of the canvas is drawn
   const RenderedView view =
-      RenderView(*item.mesh, shifted, cam_from_item, SceneRenderOptions(layout));
+      RenderView(*item.mesh, canvas, layout.camera.cam_from_world * item.world_from_item, options);
   WholeSilhouette whole;
-  whole.pixels = cv::countNonZero(view.mask);
-  if (whole.pixels > 0) whole.box = cv::boundingRect(view.mask) + reach.tl() + view.roi.tl();
+  if (view.mask.empty()) return whole;
+  const cv::Rect image_in_view =
+      (cv::Rect(camera.width, camera.height, camera.width, camera.height) & view.roi) -
+      view.roi.tl();
+  const int inside = image_in_view.empty() ? 0 : cv::countNonZero(view.mask(image_in_view));
+  whole.pixels_outside_image = cv::countNonZero(view.mask) - inside;
+  if (inside + whole.pixels_outside_image > 0) {
+    whole.box =
+        cv::boundingRect(view.mask) + view.roi.tl() - cv::Point(camera.width, camera.height);
+  }
   return whole;
 }
 
@@ -204,7 +197,8 @@ BopGtInfo ItemGtInfo(const SceneRender& render, std::size_t index, const WholeSi
   const cv::Mat& silhouette = render.item_views[index].mask;
   const cv::Mat visible = render.item_index == static_cast<short>(index);
   BopGtInfo info;
-  info.px_count_all = whole.pixels;
+  // The in-image part from the scene's own render, so that nothing seen exceeds it.
+  info.px_count_all = cv::countNonZero(silhouette) + whole.pixels_outside_image;
   info.px_count_visib = cv::countNonZero(visible);
   info.px_count_valid = cv::countNonZero(silhouette & (sensor_depth_mm > 0.0f));
   info.visib_fract =

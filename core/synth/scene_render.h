@@ -55,16 +55,16 @@ void PaintBackdrop(const SceneLayout& layout, const Backdrop& backdrop, SceneRen
 // canvas three times the image's size with the image in its middle (bop_toolkit's
 // calc_gt_info), so a part cut by the image border is not "fully visible".
 struct WholeSilhouette {
-  int pixels = 0;
+  int pixels_outside_image = 0;  // the part of the silhouette the image does not show
   cv::Rect box{-1, -1, -1, -1};  // in image coordinates; may reach outside the image
 };
 
-// Renders item `index` of `layout` alone on that canvas (only as much of it as the item's
-// projection reaches).
+// Renders item `index` of `layout` alone on that canvas (only the item's box of it).
 WholeSilhouette ItemWholeSilhouette(const SceneLayout& layout, const PinholeCamera& camera,
                                     std::size_t index);
 
-// BOP visibility of item `index`: px_count_all and bbox_obj from its whole silhouette,
+// BOP visibility of item `index`: px_count_all (its in-image silhouette and the part outside)
+// and bbox_obj from its whole silhouette,
 // px_count_visib and bbox_visib from the composite, px_count_valid the in-image silhouette pixels
 // where `sensor_depth_mm` > 0. visib_fract = px_count_visib / px_count_all.
 BopGtInfo ItemGtInfo(const SceneRender& render, std::size_t index, const WholeSilhouette& whole,
