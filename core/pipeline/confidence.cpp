@@ -22,11 +22,12 @@ struct LogisticModel {
 };
 
 constexpr LogisticModel kWithDepth{
-    -3.1700,
-    {19.3221, 15.7024, 2.3312, -27.8429, -5.7732, -23.3557, -2.9403, 2.6830, 0.2417, -11.0556}};
+    -29.8069,
+    {15.6179, 21.9881, 7.0888, -18.6324, -7.0424, -7.0063, -1.7135, 4.9680, -2.7761, -5.6988,
+     12.3146}};
 // Without depth the distance is only the matched layer's: the confidence is that the detection is
 // right in the image (projected box IoU >= 0.5 with the truth), fitted on colour-only runs.
-constexpr LogisticModel kWithoutDepth{-12.1041, {9.4217, 0, 0, 0, 0, 0, 0, 2.4283, 0, 0}};
+constexpr LogisticModel kWithoutDepth{-12.1041, {9.4217, 0, 0, 0, 0, 0, 0, 2.4283, 0, 0, 0}};
 
 double Evaluate(const LogisticModel& model, const ConfidenceFeatures& features) {
   double z = model.bias;
@@ -48,7 +49,8 @@ std::array<std::string_view, ConfidenceFeatures::kCount> ConfidenceFeatures::Nam
           "surface_continuation",
           "color_agreement",
           "icp_inlier_ratio",
-          "icp_rmse"};
+          "icp_rmse",
+          "outline_agreement"};
 }
 
 ConfidenceFeatures FeaturesOf(const Detection& detection) {
@@ -58,7 +60,8 @@ ConfidenceFeatures FeaturesOf(const Detection& detection) {
                      v.depth_inlier_ratio,       v.visible_ratio,
                      v.occluded_ratio,           v.contradicted_ratio,
                      v.surface_continuation,     v.color_agreement,
-                     detection.icp.inlier_ratio, std::min(detection.icp.rmse_mm / 10.0, 2.0)};
+                     detection.icp.inlier_ratio, std::min(detection.icp.rmse_mm / 10.0, 2.0),
+                     v.outline_agreement};
   return features;
 }
 

@@ -16,7 +16,7 @@ namespace layermod {
 
 // The model's inputs, each scaled to about 0..1.
 struct ConfidenceFeatures {
-  static constexpr int kCount = 10;
+  static constexpr int kCount = 11;
   std::array<double, kCount> values{};
 
   static std::array<std::string_view, kCount> Names();

@@ -30,13 +30,14 @@ Detection InitialDetection(const RawMatch& match, const TemplateRecord& tmpl,
 
 Detection RefineCandidate(const RawMatch& match, const TemplateArchive& archive,
                           const ArchiveObject& object, const RenderMesh& pose_mesh,
-                          const Capture& capture, const DetectorOptions& options) {
+                          const Capture& capture, const GradientLabels& gradients,
+                          const DetectorOptions& options) {
   const TemplateRecord& tmpl = archive.templates().at(match.template_id);
   Detection detection = InitialDetection(match, tmpl, object, capture);
   const Pose initial = detection.cam_from_model;
   const auto verify = [&](const Pose& pose) {
     return VerifyPose(pose_mesh, capture.camera, pose, capture.depth_mm, capture.color,
-                      options.verification);
+                      options.verification, gradients);
   };
   if (!capture.depth_mm.empty()) {
     detection.icp =
@@ -81,6 +82,7 @@ bool RanksHigher(const Detection& a, const Detection& b) {
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,
                                         const RenderMesh& pose_mesh, const Capture& capture,
+                                        const GradientLabels& gradients,
                                         const DetectorOptions& options) {
   // The best matches (suppression keeps one per template and place) are refined
   // independently, in parallel: each costs several renders.
@@ -88,7 +90,8 @@ std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
       std::min(matches.size(), static_cast<std::size_t>(options.pose_candidates));
   std::vector<Detection> refined(candidates);
   tbb::parallel_for(std::size_t{0}, candidates, [&](std::size_t i) {
-    refined[i] = RefineCandidate(matches[i], archive, object, pose_mesh, capture, options);
+    refined[i] =
+        RefineCandidate(matches[i], archive, object, pose_mesh, capture, gradients, options);
   });
   std::vector<Detection> verified;
   for (Detection& detection : refined) {

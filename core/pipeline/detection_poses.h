@@ -32,6 +32,7 @@ bool RanksHigher(const Detection& a, const Detection& b);
 std::vector<Detection> PosesFromMatches(const std::vector<RawMatch>& matches,
                                         const TemplateArchive& archive, const ArchiveObject& object,
                                         const RenderMesh& pose_mesh, const Capture& capture,
+                                        const GradientLabels& gradients,
                                         const DetectorOptions& options);
 
 }  // namespace layermod

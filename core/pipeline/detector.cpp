@@ -427,12 +427,14 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   result.timings.match_ms = MsSince(stage_start);
 
   stage_start = Clock::now();
+  const GradientLabels gradients{prepared.gradient_labels, prepared.region_px.tl()};
   std::vector<std::vector<Detection>> per_object(objects_.size());
   tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
     const ObjectEntry& entry = objects_[i];
     const TemplateArchive& archive = *archives_[entry.archive];
     per_object[i] = PosesFromMatches(result.diagnostics[i].matches, archive,
-                                     archive.Object(entry.obj_id), entry.pose_mesh, used, options);
+                                     archive.Object(entry.obj_id), entry.pose_mesh, used, gradients,
+                                     options);
   });
   result.timings.pose_ms = MsSince(stage_start);
   for (std::vector<Detection>& detections : per_object) {

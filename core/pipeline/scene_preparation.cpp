@@ -18,7 +18,7 @@ namespace {
 PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                         const PinholeCamera& camera, cv::Point offset_px,
                         const FeatureOptions& features, SimdPath simd,
-                        std::vector<cv::Mat>& depths) {
+                        std::vector<cv::Mat>& depths, cv::Mat& gradient_labels) {
   const auto levels = static_cast<std::size_t>(features.pyramid_levels);
   std::vector<cv::Mat> colors(levels);
   depths.assign(levels, cv::Mat());
@@ -46,6 +46,7 @@ PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
       maps[ModalityIndex(Modality::kDepthNormal)] = QuantizeNormals(normals);
     }
   });
+  gradient_labels = quantized[0][ModalityIndex(Modality::kColorGradient)];
   return PreparedScene(quantized, features.spread_px, simd);
 }
 
@@ -55,7 +56,9 @@ PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            const PinholeCamera& camera, const FeatureOptions& features,
                            SimdPath simd) {
   std::vector<cv::Mat> depths;
-  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd, depths);
+  cv::Mat gradient_labels;
+  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd, depths,
+                   gradient_labels);
 }
 
 int RegionAlignmentPx(const FeatureOptions& features) {
@@ -78,7 +81,7 @@ PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth
   result.region_px = aligned;
   const cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(aligned);
   result.scene = PrepareAt(color_bgr(aligned), depth, camera, aligned.tl(), features, simd,
-                           result.depth_levels_mm);
+                           result.depth_levels_mm, result.gradient_labels);
   if (depth.empty()) result.depth_levels_mm.clear();
   return result;
 }

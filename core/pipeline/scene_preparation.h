@@ -26,6 +26,9 @@ struct PreparedRegion {
   // The region's depth at each pyramid level (nearest-neighbour downsampling), the size of
   // that level's scene: CV_32F mm, 0 = no depth; empty without depth.
   std::vector<cv::Mat> depth_levels_mm;
+  // The region's colour-gradient labels at level 0 before spreading (QuantizeColorGradients):
+  // what verification compares a pose's outline with.
+  cv::Mat gradient_labels;
 };
 PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                                   const PinholeCamera& camera, const FeatureOptions& features,

@@ -3,7 +3,9 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/rasterizer.h"
 #include "util/error.h"
@@ -121,6 +123,79 @@ double ColorAgreement(const RenderedView& view, const cv::Mat& color_bgr, double
   return static_cast<double>(agreeing) / judged;
 }
 
+// Gradient label (0..7, 22.5 deg bins over 0..180 deg, features/quantize.h) of the outline's
+// normal at sparse pixel (x, y): the direction across which the smoothed mask changes.
+int OutlineLabel(const cv::Mat& smooth_mask, int x, int y) {
+  const auto at = [&](int u, int v) {
+    u = std::clamp(u, 0, smooth_mask.cols - 1);
+    v = std::clamp(v, 0, smooth_mask.rows - 1);
+    return static_cast<double>(smooth_mask.at<float>(v, u));
+  };
+  const double gx = at(x + 1, y - 1) + 2.0 * at(x + 1, y) + at(x + 1, y + 1) - at(x - 1, y - 1) -
+                    2.0 * at(x - 1, y) - at(x - 1, y + 1);
+  const double gy = at(x - 1, y + 1) + 2.0 * at(x, y + 1) + at(x + 1, y + 1) - at(x - 1, y - 1) -
+                    2.0 * at(x, y - 1) - at(x + 1, y - 1);
+  if (gx == 0.0 && gy == 0.0) return -1;
+  double angle = RadToDeg(std::atan2(gy, gx));
+  if (angle < 0.0) angle += 180.0;
+  return static_cast<int>(std::lround(angle / 22.5)) % 8;
+}
+
+bool IsOutline(const cv::Mat& mask, int x, int y) {
+  if (mask.at<std::uint8_t>(y, x) == 0) return false;
+  const auto outside = [&](int u, int v) {
+    return u < 0 || v < 0 || u >= mask.cols || v >= mask.rows || mask.at<std::uint8_t>(v, u) == 0;
+  };
+  return outside(x - 1, y) || outside(x + 1, y) || outside(x, y - 1) || outside(x, y + 1);
+}
+
+// Whether the scene has a gradient of `label` (or a neighbouring bin) within kOutlineReachPx of
+// capture pixel `pixel`; nullopt when the labels do not cover that neighbourhood.
+constexpr int kOutlineReachPx = 1;
+std::optional<bool> SceneEdgeNear(const GradientLabels& gradients, cv::Point pixel, int label) {
+  const cv::Point at = pixel - gradients.offset;
+  const cv::Rect reach(at.x - kOutlineReachPx, at.y - kOutlineReachPx, 2 * kOutlineReachPx + 1,
+                       2 * kOutlineReachPx + 1);
+  const cv::Rect labels_rect(0, 0, gradients.labels.cols, gradients.labels.rows);
+  if ((reach & labels_rect) != reach) return std::nullopt;
+  const auto wanted = static_cast<std::uint8_t>((1u << label) | (1u << ((label + 1) % 8)) |
+                                                (1u << ((label + 7) % 8)));
+  for (int y = reach.y; y < reach.br().y; ++y) {
+    const auto* row = gradients.labels.ptr<std::uint8_t>(y);
+    for (int x = reach.x; x < reach.br().x; ++x) {
+      if ((row[x] & wanted) != 0) return true;
+    }
+  }
+  return false;
+}
+
+double OutlineAgreement(const RenderedView& view, const cv::Mat& depth_mm,
+                        const GradientLabels& gradients, double tolerance_mm) {
+  if (gradients.labels.empty()) return 0.0;
+  cv::Mat smooth_mask;
+  view.mask.convertTo(smooth_mask, CV_32F);
+  cv::GaussianBlur(smooth_mask, smooth_mask, cv::Size(5, 5), 1.0, 1.0, cv::BORDER_CONSTANT);
+  int judged = 0;
+  int agreeing = 0;
+  for (int y = 0; y < view.mask.rows; ++y) {
+    for (int x = 0; x < view.mask.cols; ++x) {
+      if (!IsOutline(view.mask, x, y)) continue;
+      const cv::Point pixel = CapturePixel(view.roi, x, y);
+      if (!depth_mm.empty()) {  // an occluder's edges are not the part's
+        const float scene = depth_mm.at<float>(pixel);
+        if (scene > 0.0f && scene < view.depth_mm.at<float>(y, x) - tolerance_mm) continue;
+      }
+      const int label = OutlineLabel(smooth_mask, x, y);
+      if (label < 0) continue;
+      const std::optional<bool> near = SceneEdgeNear(gradients, pixel, label);
+      if (!near) continue;
+      ++judged;
+      if (*near) ++agreeing;
+    }
+  }
+  return judged > 0 ? static_cast<double>(agreeing) / judged : 0.0;
+}
+
 }  // namespace
 
 void VerificationOptions::Validate() const {
@@ -134,7 +209,7 @@ void VerificationOptions::Validate() const {
 
 Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, const Pose& pose,
                         const cv::Mat& depth_mm, const cv::Mat& color_bgr,
-                        const VerificationOptions& options) {
+                        const VerificationOptions& options, const GradientLabels& gradients) {
   options.Validate();
   Verification result;
   const RenderedView view = RenderView(mesh, camera.EveryNthPixel(kPixelStep), pose);
@@ -156,6 +231,8 @@ Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, con
     result.surface_continuation = SurfaceContinuation(view, depth_mm, options.depth_tolerance_mm);
   }
   result.color_agreement = ColorAgreement(view, color_bgr, options.hue_tolerance_deg);
+  result.outline_agreement =
+      OutlineAgreement(view, depth_mm, gradients, options.depth_tolerance_mm);
   const bool depth_ok =
       !has_depth || (result.depth_inlier_ratio >= options.min_depth_inlier_ratio &&
                      result.visible_ratio >= options.min_visible_ratio);

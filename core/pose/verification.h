@@ -36,8 +36,21 @@ struct Verification {
   // continues the model's nearby surface. A model laid over part of a larger surface (a wrong
   // template on a box, a wall, the table) has its outline where the scene has none.
   double surface_continuation = 0.0;
+  // Along the silhouette's outline, where the scene does not hide it: the share of outline
+  // pixels with a scene colour gradient of the outline's orientation (one 22.5 deg bin either
+  // way) within kOutlineReachPx. A part's outline is where texture-less parts show their edges
+  // (LINE-2D); a pose turned or shifted from the true one puts its outline beside them.
+  // 0 when no gradient labels were given.
+  double outline_agreement = 0.0;
   int silhouette_px = 0;  // about: counted on every second pixel of every second row
   bool accepted = false;
+};
+
+// The scene's colour-gradient labels at level 0 (QuantizeColorGradients) over part of the
+// capture: labels.at(y, x) is capture pixel (x + offset.x, y + offset.y).
+struct GradientLabels {
+  cv::Mat labels;
+  cv::Point offset;
 };
 
 // Depth consistency: on the model's silhouette, scene depth within tolerance is consistent, a
@@ -47,6 +60,7 @@ struct Verification {
 // Every second pixel of every second row is rendered and judged.
 Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, const Pose& pose,
                         const cv::Mat& depth_mm, const cv::Mat& color_bgr,
-                        const VerificationOptions& options = {});
+                        const VerificationOptions& options = {},
+                        const GradientLabels& gradients = {});
 
 }  // namespace layermod

@@ -5,6 +5,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "features/quantize.h"
 #include "pose/pose_test_scene.h"
 
 namespace layermod {
@@ -97,6 +98,41 @@ TEST(VerificationTest, SurfaceContinuingPastTheOutlineIsMeasured) {
   const Verification on_surface =
       VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, flat, scene.color);
   EXPECT_GT(on_surface.surface_continuation, 0.5);
+}
+
+GradientLabels WholeImageGradients(const cv::Mat& color) {
+  return {QuantizeColorGradients(color, 10.0f), cv::Point(0, 0)};
+}
+
+TEST(VerificationTest, OutlineAgreementFallsWhenThePoseTurnsInTheImage) {
+  // The part's outline lies on the scene's gradients at the true pose; turned 20 degrees about
+  // the optical axis most of it lies beside them. Without gradients it is not judged.
+  const Pose truth = test::SamplePose(800.0);
+  const test::TestScene scene = test::RenderTestScene(truth);
+  const GradientLabels gradients = WholeImageGradients(scene.color);
+  const Verification right = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth,
+                                        scene.depth_mm, scene.color, {}, gradients);
+  EXPECT_GT(right.outline_agreement, 0.9);
+  const Pose turned = test::Perturb(truth, 20.0, truth.t.normalized(), {0.0, 0.0, 0.0});
+  const Verification wrong = VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), turned,
+                                        scene.depth_mm, scene.color, {}, gradients);
+  EXPECT_LT(wrong.outline_agreement, right.outline_agreement - 0.3);
+  const Verification unjudged =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, scene.depth_mm, scene.color);
+  EXPECT_EQ(unjudged.outline_agreement, 0.0);
+}
+
+TEST(VerificationTest, OutlineAgreementIgnoresTheOutlineBehindAnOccluder) {
+  // A bar in front of the left part of the image, with its own strong edge: the outline behind
+  // it is not judged, so the agreement stays that of the visible outline.
+  const Pose truth = test::SamplePose(800.0);
+  test::TestScene scene = test::RenderTestScene(truth);
+  scene.depth_mm(cv::Rect(0, 0, 320, 480)).setTo(500.0f);
+  scene.color(cv::Rect(0, 0, 320, 480)).setTo(cv::Scalar(90, 90, 90));
+  const Verification result =
+      VerifyPose(test::SampleRenderMesh(), test::VgaCamera(), truth, scene.depth_mm, scene.color,
+                 {}, WholeImageGradients(scene.color));
+  EXPECT_GT(result.outline_agreement, 0.9);
 }
 
 TEST(VerificationTest, ColourDisagreementRejectsASaturatedModel) {
