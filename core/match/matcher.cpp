@@ -29,6 +29,11 @@ struct Candidate {
   RawMatch match;
   std::int32_t obj_id = 0;
   cv::Point2f centre_px;
+  // What matches are ordered by: the similarity with the hidden features (on occluders, past the
+  // image) credited as where templates are ranked (Occluders::hidden_credit). A match mostly hidden
+  // has shown little, and its visible features alone would put it ahead of matches in full
+  // view; without hidden features it is match.similarity_percent.
+  float rank_percent = 0.0f;
 };
 
 struct CoarseHit {
@@ -469,12 +474,17 @@ std::optional<Candidate> RefineRankedHit(const TemplateHits& source,
                      visible_share};
   candidate.obj_id = source.record->obj_id;
   candidate.centre_px = cv::Point2f(refined->position_px + source.half_box);
+  candidate.rank_percent =
+      score.hidden == 0
+          ? candidate.match.similarity_percent
+          : SimilarityPercent(score.sum + source.occluders->hidden_credit * score.hidden,
+                              score.features);
   return candidate;
 }
 
 bool BetterMatch(const Candidate& a, const Candidate& b) {
-  return std::make_tuple(-a.match.similarity_percent, a.match.template_id, a.match.y, a.match.x) <
-         std::make_tuple(-b.match.similarity_percent, b.match.template_id, b.match.y, b.match.x);
+  return std::make_tuple(-a.rank_percent, a.match.template_id, a.match.y, a.match.x) <
+         std::make_tuple(-b.rank_percent, b.match.template_id, b.match.y, b.match.x);
 }
 
 // Greedy non-maximum suppression: best first, a match is dropped when a kept match of the same

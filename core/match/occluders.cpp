@@ -17,12 +17,12 @@ void CheckMask(const cv::Mat& mask, const SceneLevel& level) {
   }
 }
 
-// `source` (linearized) whose linear memories score at least kHiddenFeatureScore at the pixels
-// of `mask` for every feature; the rest, response maps included, shared with `source`.
-SceneLevel WithHiddenPixels(const SceneLevel& source, const cv::Mat& mask) {
+// `source` (linearized) whose linear memories score at least `hidden_credit` at the pixels of
+// `mask` for every feature; the rest, response maps included, shared with `source`.
+SceneLevel WithHiddenPixels(const SceneLevel& source, const cv::Mat& mask, int hidden_credit) {
   SceneLevel level = source;
   cv::Mat credit = cv::Mat::zeros(mask.size(), CV_8UC1);
-  credit.setTo(kHiddenFeatureScore, mask);
+  credit.setTo(hidden_credit, mask);
   const LinearMemory floors = Linearize(credit, source.spread_px);
   for (int m = 0; m < kModalityCount; ++m) {
     if (!source.present[m]) continue;
@@ -35,7 +35,11 @@ SceneLevel WithHiddenPixels(const SceneLevel& source, const cv::Mat& mask) {
 
 }  // namespace
 
-Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks) {
+Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks, int hidden_credit) {
+  if (hidden_credit < 0 || hidden_credit > kMaxFeatureScore) {
+    throw Error("occluders: a hidden feature's credit must lie in 0.." +
+                std::to_string(kMaxFeatureScore));
+  }
   if (static_cast<int>(masks.size()) != scene.LevelCount()) {
     throw Error("occluder masks: " + std::to_string(masks.size()) + " for a scene of " +
                 std::to_string(scene.LevelCount()) + " levels");
@@ -47,11 +51,11 @@ Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks) 
     if (level == 0) {
       ranked.push_back(source);
     } else {
-      ranked.push_back(
-          WithHiddenPixels(scene.LinearizedLevel(static_cast<int>(level)), masks[level]));
+      ranked.push_back(WithHiddenPixels(scene.LinearizedLevel(static_cast<int>(level)),
+                                        masks[level], hidden_credit));
     }
   }
-  return {std::move(masks), PreparedScene(std::move(ranked))};
+  return {std::move(masks), hidden_credit, PreparedScene(std::move(ranked))};
 }
 
 VisibleScore ScoreVisibleFeatures(const TemplateLevel& level, const SceneLevel& scene,

@@ -23,10 +23,15 @@
 namespace layermod {
 
 inline constexpr int kHiddenFeatureScore = 3;  // of kMaxFeatureScore
+// Past the image's border (a part the border cuts) a feature is credited less: there the hidden
+// share of a template is anything up to a half, not what an occluder covers, and with 3 of 4 the
+// templates reaching far past the border with a straight edge inside took the refinements.
+inline constexpr int kOutsideFeatureScore = 2;
 
 // What a search with occluders needs (TemplateSearch::occluders).
 struct Occluders {
   std::vector<cv::Mat> masks;  // per level, CV_8UC1 of its size, non-zero at occluder pixels
+  int hidden_credit = kHiddenFeatureScore;  // what a hidden feature scores where ranked
   // The scene templates are ranked on: above level 0, its linear memories score at least
   // kHiddenFeatureScore at occluder pixels for every feature (its response maps, which only
   // refinement reads, are the scene's); level 0 (the top level only of templates without
@@ -34,8 +39,10 @@ struct Occluders {
   PreparedScene ranked;
 };
 
-// Throws Error unless there is one mask per level of `scene`, CV_8UC1 of that level's size.
-Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks);
+// Throws Error unless there is one mask per level of `scene`, CV_8UC1 of that level's size, and
+// the credit lies in 0..kMaxFeatureScore.
+Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks,
+                        int hidden_credit = kHiddenFeatureScore);
 
 // A template level's features whose modality the scene has, at one position, split by an
 // occluder mask.

@@ -21,10 +21,9 @@ struct LogisticModel {
   std::array<double, ConfidenceFeatures::kCount> weights;
 };
 
-constexpr LogisticModel kWithDepth{
-    -29.8069,
-    {15.6179, 21.9881, 7.0888, -18.6324, -7.0424, -7.0063, -1.7135, 4.9680, -2.7761, -5.6988,
-     12.3146}};
+constexpr LogisticModel kWithDepth{-29.8069,
+                                   {15.6179, 21.9881, 7.0888, -18.6324, -7.0424, -7.0063, -1.7135,
+                                    4.9680, -2.7761, -5.6988, 12.3146}};
 // Without depth the distance is only the matched layer's: the confidence is that the detection is
 // right in the image (projected box IoU >= 0.5 with the truth), fitted on colour-only runs.
 constexpr LogisticModel kWithoutDepth{-12.1041, {9.4217, 0, 0, 0, 0, 0, 0, 2.4283, 0, 0, 0}};

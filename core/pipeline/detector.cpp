@@ -139,6 +139,9 @@ std::optional<Occluders> LayerOccluders(const PreparedRegion& prepared,
       OccludersNearerThan(depth_levels_mm, nearest_mm,
                           ReachOfPoints(points, largest_template, options.coarse.point_step_px));
   if (masks.empty()) return std::nullopt;
+  for (std::size_t level = 0; level < prepared.outside_image.size(); ++level) {
+    masks[level] |= prepared.outside_image[level];
+  }
   return MakeOccluders(prepared.scene, std::move(masks));
 }
 
@@ -158,13 +161,13 @@ TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, 
 // so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
 // nearer than the object can be at that layer as occluders.
 // `occluder_depths_mm`: WholeMillimetreDepths of the region when occlusion-aware, else empty.
-std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
-                                      const std::vector<cv::Mat>& occluder_depths_mm,
-                                      const TemplateArchive& archive, const ArchiveObject& object,
-                                      std::span<const TemplateFacts> object_facts,
-                                      const cv::Size& largest_template,
-                                      const ObjectDiagnostics& diagnostics,
-                                      const DetectorOptions& options) {
+// `border`: the padding past the image as occluders (nullptr when the region has none); a layer
+// without occluders of its own uses it.
+std::vector<RawMatch> MatchKeptBlocks(
+    const PreparedRegion& prepared, const std::vector<cv::Mat>& occluder_depths_mm,
+    const Occluders* border, const TemplateArchive& archive, const ArchiveObject& object,
+    std::span<const TemplateFacts> object_facts, const cv::Size& largest_template,
+    const ObjectDiagnostics& diagnostics, const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
   std::map<int, std::vector<cv::Point>> points_by_layer;
   for (int index : diagnostics.coarse.kept) {
@@ -182,6 +185,7 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
   for (const auto& [layer, points] : points_by_layer) {
     searches.push_back(LayerSearch(archive, object.obj_id, layer, object_facts));
     searches.back().candidate_points = &points;
+    searches.back().occluders = border;
     if (occluder_depths_mm.empty()) continue;
     std::optional<Occluders>& layer_occluders = occluders[searches.size() - 1];
     layer_occluders = LayerOccluders(prepared, occluder_depths_mm, object, layer, points,
@@ -201,13 +205,14 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
 
 // Exhaustive and colour-only invocation: every layer's templates over the whole image, through
 // the layer's view tree where it has one (as MatchTemplates over all of them otherwise).
-std::vector<RawMatch> MatchEveryLayer(const PreparedRegion& prepared,
+std::vector<RawMatch> MatchEveryLayer(const PreparedRegion& prepared, const Occluders* border,
                                       const TemplateArchive& archive, const ArchiveObject& object,
                                       std::span<const TemplateFacts> object_facts,
                                       const DetectorOptions& options) {
   std::vector<TemplateSearch> searches;
   for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
     searches.push_back(LayerSearch(archive, object.obj_id, static_cast<int>(layer), object_facts));
+    searches.back().occluders = border;
   }
   return MatchTemplateGroups(prepared.scene, searches, options.match);
 }
@@ -339,6 +344,15 @@ void Detector::IndexObjects() {
   }
 }
 
+int Detector::BorderPaddingPx() const {
+  int padding = 0;
+  for (const ObjectEntry& entry : objects_) {
+    padding =
+        std::max({padding, entry.largest_template.width / 2, entry.largest_template.height / 2});
+  }
+  return padding;
+}
+
 const ArchiveObject& Detector::Object(std::int32_t obj_id) const {
   return ArchiveOf(obj_id).Object(obj_id);
 }
@@ -399,8 +413,17 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   }
 
   auto stage_start = Clock::now();
-  const PreparedRegion prepared = PrepareSceneRegion(used.color, used.depth_mm, used.camera,
-                                                     features, search_region, options.match.simd);
+  const PreparedRegion prepared =
+      PrepareSceneRegion(used.color, used.depth_mm, used.camera, features, search_region,
+                         options.match.simd, BorderPaddingPx());
+  // A part the image's border cuts is matched by templates reaching past it: the padding there
+  // is hidden, as occluders are (match/occluders.h), so their similarity is that of the
+  // features in the image, of which they need MatchOptions::min_visible_share.
+  const std::optional<Occluders> border =
+      prepared.outside_image.empty()
+          ? std::nullopt
+          : std::optional<Occluders>(
+                MakeOccluders(prepared.scene, prepared.outside_image, kOutsideFeatureScore));
   // Occlusion-aware matching compares the depth with each layer's bound in whole millimetres.
   const std::vector<cv::Mat> occluder_depths_mm =
       scene_patch && options.occlusion == OcclusionMode::kAware
@@ -420,9 +443,11 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     diagnostics.obj_id = entry.obj_id;
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
     diagnostics.matches =
-        scene_patch ? MatchKeptBlocks(prepared, occluder_depths_mm, archive, object, entry.facts,
-                                      entry.largest_template, diagnostics, options)
-                    : MatchEveryLayer(prepared, archive, object, entry.facts, options);
+        scene_patch
+            ? MatchKeptBlocks(prepared, occluder_depths_mm, border ? &*border : nullptr, archive,
+                              object, entry.facts, entry.largest_template, diagnostics, options)
+            : MatchEveryLayer(prepared, border ? &*border : nullptr, archive, object, entry.facts,
+                              options);
   });
   result.timings.match_ms = MsSince(stage_start);
 
@@ -432,9 +457,9 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
     const ObjectEntry& entry = objects_[i];
     const TemplateArchive& archive = *archives_[entry.archive];
-    per_object[i] = PosesFromMatches(result.diagnostics[i].matches, archive,
-                                     archive.Object(entry.obj_id), entry.pose_mesh, used, gradients,
-                                     options);
+    per_object[i] =
+        PosesFromMatches(result.diagnostics[i].matches, archive, archive.Object(entry.obj_id),
+                         entry.pose_mesh, used, gradients, options);
   });
   result.timings.pose_ms = MsSince(stage_start);
   for (std::vector<Detection>& detections : per_object) {

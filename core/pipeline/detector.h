@@ -132,6 +132,9 @@ class Detector {
   };
 
   void IndexObjects();  // fills objects_ from archives_; throws Error for inconsistent archives
+  // How far past the image a scene region may reach: half the largest template of any object, so
+  // that a part the border cuts in half can still be matched (PrepareSceneRegion).
+  int BorderPaddingPx() const;
 
   std::shared_ptr<const std::vector<TemplateArchive>> owned_;     // by-value construction only
   std::vector<std::shared_ptr<const TemplateArchive>> archives_;  // into owned_ or shared

@@ -18,7 +18,8 @@ namespace {
 PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                         const PinholeCamera& camera, cv::Point offset_px,
                         const FeatureOptions& features, SimdPath simd,
-                        std::vector<cv::Mat>& depths, cv::Mat& gradient_labels) {
+                        const std::vector<cv::Mat>& outside_image, std::vector<cv::Mat>& depths,
+                        cv::Mat& gradient_labels) {
   const auto levels = static_cast<std::size_t>(features.pyramid_levels);
   std::vector<cv::Mat> colors(levels);
   depths.assign(levels, cv::Mat());
@@ -46,6 +47,11 @@ PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
       maps[ModalityIndex(Modality::kDepthNormal)] = QuantizeNormals(normals);
     }
   });
+  for (std::size_t level = 0; level < outside_image.size() && level < levels; ++level) {
+    for (cv::Mat& labels : quantized[level]) {
+      if (!labels.empty()) labels.setTo(0, outside_image[level]);
+    }
+  }
   gradient_labels = quantized[0][ModalityIndex(Modality::kColorGradient)];
   return PreparedScene(quantized, features.spread_px, simd);
 }
@@ -57,7 +63,7 @@ PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            SimdPath simd) {
   std::vector<cv::Mat> depths;
   cv::Mat gradient_labels;
-  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd, depths,
+  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd, {}, depths,
                    gradient_labels);
 }
 
@@ -66,21 +72,72 @@ int RegionAlignmentPx(const FeatureOptions& features) {
   return std::max(features.spread_px.at(static_cast<std::size_t>(top)), 1) << top;
 }
 
+namespace {
+
+int FloorToMultiple(int value, int step) {
+  return (value >= 0 ? value : value - step + 1) / step * step;
+}
+
+int CeilToMultiple(int value, int step) { return FloorToMultiple(value + step - 1, step); }
+
+// Per pyramid level, CV_8UC1 of that level's size: non-zero at the pixels of the padding (those
+// whose level-0 pixel lies outside `image`, given in the region's level-0 pixels).
+std::vector<cv::Mat> OutsideImageMasks(cv::Size size, int levels, const cv::Rect& image) {
+  std::vector<cv::Mat> masks;
+  for (int level = 0; level < levels; ++level) {
+    const int scale = 1 << level;
+    if (level > 0) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
+    const cv::Rect inside = cv::Rect(cv::Point(CeilToMultiple(image.x, scale) / scale,
+                                               CeilToMultiple(image.y, scale) / scale),
+                                     cv::Point(CeilToMultiple(image.br().x, scale) / scale,
+                                               CeilToMultiple(image.br().y, scale) / scale)) &
+                            cv::Rect(cv::Point(0, 0), size);
+    cv::Mat mask(size, CV_8UC1, cv::Scalar(255));
+    mask(inside).setTo(0);
+    masks.push_back(mask);
+  }
+  return masks;
+}
+
+}  // namespace
+
 PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                                   const PinholeCamera& camera, const FeatureOptions& features,
-                                  const cv::Rect& region, SimdPath simd) {
+                                  const cv::Rect& region, SimdPath simd, int padding_px) {
   const int align = RegionAlignmentPx(features);
   const cv::Rect image(0, 0, color_bgr.cols, color_bgr.rows);
-  const cv::Rect clipped = region & image;
-  const auto up = [align](int value) { return (value + align - 1) / align * align; };
-  const cv::Rect aligned = cv::Rect(cv::Point(clipped.x / align * align, clipped.y / align * align),
-                                    cv::Point(up(clipped.br().x), up(clipped.br().y))) &
-                           image;
+  const int padding = CeilToMultiple(std::max(padding_px, 0), align);
+  const cv::Rect reachable(-padding, -padding, image.width + 2 * padding,
+                           image.height + 2 * padding);
+  const cv::Rect clipped = region & reachable;
+  const cv::Rect aligned =
+      cv::Rect(
+          cv::Point(FloorToMultiple(clipped.x, align), FloorToMultiple(clipped.y, align)),
+          cv::Point(CeilToMultiple(clipped.br().x, align), CeilToMultiple(clipped.br().y, align))) &
+      reachable;
   PreparedRegion result;
-  if (aligned.empty()) return result;
+  if ((aligned & image).empty()) return result;
   result.region_px = aligned;
-  const cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(aligned);
-  result.scene = PrepareAt(color_bgr(aligned), depth, camera, aligned.tl(), features, simd,
+  const cv::Rect seen = aligned & image;
+  cv::Mat color = color_bgr(seen);
+  cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(seen);
+  const bool padded = seen != aligned;
+  if (padded) {
+    // Past the image the colour goes on as its edge (no gradient across the image's border) and
+    // the depth is missing; the labels there are cleared below, so nothing matches on them.
+    const int top = seen.y - aligned.y;
+    const int left = seen.x - aligned.x;
+    const int bottom = aligned.br().y - seen.br().y;
+    const int right = aligned.br().x - seen.br().x;
+    cv::copyMakeBorder(color, color, top, bottom, left, right, cv::BORDER_REPLICATE);
+    if (!depth.empty()) {
+      cv::copyMakeBorder(depth, depth, top, bottom, left, right, cv::BORDER_CONSTANT,
+                         cv::Scalar(0));
+    }
+    result.outside_image =
+        OutsideImageMasks(aligned.size(), features.pyramid_levels, image - aligned.tl());
+  }
+  result.scene = PrepareAt(color, depth, camera, aligned.tl(), features, simd, result.outside_image,
                            result.depth_levels_mm, result.gradient_labels);
   if (depth.empty()) result.depth_levels_mm.clear();
   return result;

@@ -26,13 +26,21 @@ struct PreparedRegion {
   // The region's depth at each pyramid level (nearest-neighbour downsampling), the size of
   // that level's scene: CV_32F mm, 0 = no depth; empty without depth.
   std::vector<cv::Mat> depth_levels_mm;
+  // Where the region reaches past the image (PrepareSceneRegion's padding): per pyramid level,
+  // CV_8UC1 of that level's size, non-zero at padding pixels, which carry no label. Empty when the
+  // region lies inside the image.
+  std::vector<cv::Mat> outside_image;
   // The region's colour-gradient labels at level 0 before spreading (QuantizeColorGradients):
   // what verification compares a pose's outline with.
   cv::Mat gradient_labels;
 };
+// With `padding_px` > 0 the region may reach that far past the image (rounded up to the
+// alignment), so that templates of a part the image's border cuts can be placed over it: the
+// padding has no labels and no depth, and PreparedRegion::outside_image marks it.
 PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                                   const PinholeCamera& camera, const FeatureOptions& features,
-                                  const cv::Rect& region, SimdPath simd = SimdPath::kAuto);
+                                  const cv::Rect& region, SimdPath simd = SimdPath::kAuto,
+                                  int padding_px = 0);
 
 // The alignment of prepared regions: one top-level grid cell of the coarsest level (spread T
 // there times 2^level), so that the region's pyramid and grid line up with the whole image's.

@@ -6,7 +6,8 @@
 namespace layermod {
 namespace {
 
-// A pose the scene confirms: high score, exact depth fit, nothing contradicted.
+// A pose the scene confirms: high score, exact depth fit, nothing contradicted, its outline on
+// the scene's edges.
 Detection Confirmed() {
   Detection detection;
   detection.score = 92.0f;
@@ -14,6 +15,7 @@ Detection Confirmed() {
   detection.verification.depth_inlier_ratio = 0.98;
   detection.verification.visible_ratio = 0.99;
   detection.verification.color_agreement = 1.0;
+  detection.verification.outline_agreement = 0.95;
   detection.icp.inlier_ratio = 0.97;
   detection.icp.rmse_mm = 2.0;
   return detection;
@@ -24,6 +26,17 @@ TEST(ConfidenceTest, FeaturesAreNamedAndScaled) {
   EXPECT_EQ(ConfidenceFeatures::Names()[0], "score");
   EXPECT_DOUBLE_EQ(features.values[0], 0.92);
   EXPECT_DOUBLE_EQ(features.values[9], 0.2);  // ICP RMSE in cm
+  EXPECT_EQ(ConfidenceFeatures::Names()[10], "outline_agreement");
+  EXPECT_DOUBLE_EQ(features.values[10], 0.95);
+}
+
+TEST(ConfidenceTest, AnOutlineBesideTheScenesEdgesIsDoubtful) {
+  // The depth fits as well, but the outline lies where the scene has no edge of its
+  // orientation: a pose turned or shifted on a surface that fits it (docs/RESULTS.md).
+  Detection beside = Confirmed();
+  beside.verification.outline_agreement = 0.45;
+  EXPECT_LT(DetectionConfidence(FeaturesOf(beside), true), 0.5);
+  EXPECT_GT(DetectionConfidence(FeaturesOf(Confirmed()), true), 0.9);
 }
 
 TEST(ConfidenceTest, AConfirmedPoseIsConfidentAndAContradictedOneIsNot) {

@@ -83,5 +83,48 @@ TEST(ScenePreparationTest, RegionsAreClippedToTheImage) {
   EXPECT_EQ(outside.scene.LevelCount(), 0);
 }
 
+TEST(ScenePreparationTest, APaddedRegionReachesPastTheImageWithoutLabelsThere) {
+  cv::RNG rng(73);
+  const Frame frame = RandomFrame(rng);
+  const FeatureOptions features;
+  const int align = RegionAlignmentPx(features);
+  const PreparedRegion padded =
+      PrepareSceneRegion(frame.color, frame.depth_mm, test::RoundedKinectCamera(), features,
+                         cv::Rect(-70, 400, 200, 200), SimdPath::kAuto, 50);
+  // 50 px rounded up to the alignment on each side, the region's corner aligned.
+  const int reach = (50 + align - 1) / align * align;
+  EXPECT_EQ(padded.region_px.x, -reach);
+  EXPECT_EQ(padded.region_px.br().y, 480 + reach);
+  EXPECT_EQ(padded.region_px.y % align, 0);
+  ASSERT_EQ(padded.outside_image.size(), static_cast<std::size_t>(features.pyramid_levels));
+  const cv::Point image_tl = -padded.region_px.tl();
+  for (int level = 0; level < padded.scene.LevelCount(); ++level) {
+    const cv::Mat& outside = padded.outside_image[static_cast<std::size_t>(level)];
+    ASSERT_EQ(outside.size(), padded.scene.Level(level).size_px);
+    const int scale = 1 << level;
+    // The column left of the image's first one and the row below its last one are padding, the
+    // image's own first column and last row are not.
+    const int first_x = image_tl.x / scale;
+    const int last_y = (image_tl.y + 480) / scale - 1;
+    EXPECT_NE(outside.at<std::uint8_t>(last_y - 2, first_x - 1), 0) << "level " << level;
+    EXPECT_EQ(outside.at<std::uint8_t>(last_y - 2, first_x), 0) << "level " << level;
+    EXPECT_NE(outside.at<std::uint8_t>(last_y + 1, first_x + 2), 0) << "level " << level;
+    EXPECT_EQ(outside.at<std::uint8_t>(last_y, first_x + 2), 0) << "level " << level;
+    for (int modality = 0; modality < kModalityCount; ++modality) {
+      const cv::Mat& labels = padded.scene.Level(level).quantized[modality];
+      EXPECT_EQ(cv::countNonZero(labels & outside), 0) << "level " << level;
+      EXPECT_GT(cv::countNonZero(labels), 0) << "level " << level;
+    }
+  }
+  EXPECT_EQ(cv::countNonZero(padded.gradient_labels & padded.outside_image.front()), 0);
+
+  // Without padding the same region stops at the image, and has no padding masks.
+  const PreparedRegion clipped =
+      PrepareSceneRegion(frame.color, frame.depth_mm, test::RoundedKinectCamera(), features,
+                         cv::Rect(-70, 400, 200, 200));
+  EXPECT_EQ(clipped.region_px.tl(), cv::Point(0, 400 / align * align));
+  EXPECT_TRUE(clipped.outside_image.empty());
+}
+
 }  // namespace
 }  // namespace layermod
