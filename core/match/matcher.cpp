@@ -455,7 +455,8 @@ std::optional<Candidate> RefineRankedHit(const TemplateHits& source,
       RefineHit(*source.record, summaries, scene, source.top, hit, similarity);
   if (!refined) return std::nullopt;
   VisibleScore score{summaries.front().usable_features, 0, refined->sum};
-  if (source.occluders != nullptr) {
+  const cv::Rect box(refined->position_px, summaries.front().extent);
+  if (source.occluders != nullptr && (box & source.occluders->clear_px) != box) {
     score = ScoreVisibleFeatures(source.record->levels[0], scene.Level(0),
                                  source.occluders->masks.front(), refined->position_px);
     if (score.Visible() < options.min_visible_share * static_cast<float>(score.features)) {

@@ -35,7 +35,8 @@ SceneLevel WithHiddenPixels(const SceneLevel& source, const cv::Mat& mask, int h
 
 }  // namespace
 
-Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks, int hidden_credit) {
+Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks, int hidden_credit,
+                        const cv::Rect& clear_px) {
   if (hidden_credit < 0 || hidden_credit > kMaxFeatureScore) {
     throw Error("occluders: a hidden feature's credit must lie in 0.." +
                 std::to_string(kMaxFeatureScore));
@@ -55,7 +56,7 @@ Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks, 
                                         masks[level], hidden_credit));
     }
   }
-  return {std::move(masks), hidden_credit, PreparedScene(std::move(ranked))};
+  return {std::move(masks), hidden_credit, clear_px, PreparedScene(std::move(ranked))};
 }
 
 VisibleScore ScoreVisibleFeatures(const TemplateLevel& level, const SceneLevel& scene,

@@ -32,6 +32,9 @@ inline constexpr int kOutsideFeatureScore = 2;
 struct Occluders {
   std::vector<cv::Mat> masks;  // per level, CV_8UC1 of its size, non-zero at occluder pixels
   int hidden_credit = kHiddenFeatureScore;  // what a hidden feature scores where ranked
+  // Level-0 pixels known to hold no hidden pixel (empty: none known): a match within them is
+  // scored as without occluders.
+  cv::Rect clear_px;
   // The scene templates are ranked on: above level 0, its linear memories score at least
   // kHiddenFeatureScore at occluder pixels for every feature (its response maps, which only
   // refinement reads, are the scene's); level 0 (the top level only of templates without
@@ -42,7 +45,7 @@ struct Occluders {
 // Throws Error unless there is one mask per level of `scene`, CV_8UC1 of that level's size, and
 // the credit lies in 0..kMaxFeatureScore.
 Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks,
-                        int hidden_credit = kHiddenFeatureScore);
+                        int hidden_credit = kHiddenFeatureScore, const cv::Rect& clear_px = {});
 
 // A template level's features whose modality the scene has, at one position, split by an
 // occluder mask.

@@ -235,13 +235,17 @@ cv::Size LargestTemplate(const TemplateArchive& archive, const ArchiveObject& ob
 
 // Scene-Patch matching reads the scene only near an object's surviving detection points: within
 // a template box of the point, plus the point search radius and a margin for image filtering at
-// the region's border.
+// the region's border. Past the image only half a box: a template's anchor lies near its box's
+// centre, and a template reaching farther past the border has too little in the image to match.
 cv::Rect ReachOfKeptPoints(const CoarsePositioning& coarse, const cv::Size& largest_template,
-                           const DetectorOptions& options) {
+                           const cv::Size& image_size, const DetectorOptions& options) {
   constexpr int kFilterMarginPx = 8;
   std::vector<cv::Point> pixels;
   for (const DetectionPoint& point : coarse.KeptPoints()) pixels.push_back(point.pixel);
-  return ReachOfPoints(pixels, largest_template, options.coarse.point_step_px + kFilterMarginPx);
+  const int radius = options.coarse.point_step_px + kFilterMarginPx;
+  const cv::Rect image(cv::Point(0, 0), image_size);
+  return (ReachOfPoints(pixels, largest_template, radius) & image) |
+         ReachOfPoints(pixels, largest_template / 2, radius);
 }
 
 }  // namespace
@@ -405,8 +409,8 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
                         used, features, options, result.diagnostics[i], object_timings[i]);
     });
     for (std::size_t i = 0; i < objects_.size(); ++i) {
-      search_region |=
-          ReachOfKeptPoints(result.diagnostics[i].coarse, objects_[i].largest_template, options);
+      search_region |= ReachOfKeptPoints(result.diagnostics[i].coarse, objects_[i].largest_template,
+                                         used.color.size(), options);
       result.timings.regions_ms += object_timings[i].regions_ms;
       result.timings.coarse_ms += object_timings[i].coarse_ms;
     }
@@ -423,7 +427,8 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       prepared.outside_image.empty()
           ? std::nullopt
           : std::optional<Occluders>(
-                MakeOccluders(prepared.scene, prepared.outside_image, kOutsideFeatureScore));
+                MakeOccluders(prepared.scene, prepared.outside_image, kOutsideFeatureScore,
+                              cv::Rect(-prepared.region_px.tl(), used.color.size())));
   // Occlusion-aware matching compares the depth with each layer's bound in whole millimetres.
   const std::vector<cv::Mat> occluder_depths_mm =
       scene_patch && options.occlusion == OcclusionMode::kAware

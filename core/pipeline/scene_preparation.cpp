@@ -14,12 +14,13 @@ namespace layermod {
 
 namespace {
 
-// The scene's pyramid, prepared; its depth levels into `depths` (empty Mats without depth).
-PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
-                        const PinholeCamera& camera, cv::Point offset_px,
-                        const FeatureOptions& features, SimdPath simd,
-                        const std::vector<cv::Mat>& outside_image, std::vector<cv::Mat>& depths,
-                        cv::Mat& gradient_labels) {
+using QuantizedLevels = std::vector<std::array<cv::Mat, kModalityCount>>;
+
+// The scene's quantized pyramid (colour gradients; depth normals with depth); its depth levels
+// into `depths` (empty Mats without depth).
+QuantizedLevels QuantizeAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
+                           const PinholeCamera& camera, cv::Point offset_px,
+                           const FeatureOptions& features, std::vector<cv::Mat>& depths) {
   const auto levels = static_cast<std::size_t>(features.pyramid_levels);
   std::vector<cv::Mat> colors(levels);
   depths.assign(levels, cv::Mat());
@@ -32,7 +33,7 @@ PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
   // Each (level, modality) pair is quantized independently: level 0's two are the big ones, so
   // two cores share the work evenly.
   const auto modalities = static_cast<std::size_t>(kModalityCount);
-  std::vector<std::array<cv::Mat, kModalityCount>> quantized(levels);
+  QuantizedLevels quantized(levels);
   tbb::parallel_for(std::size_t{0}, levels * modalities, [&](std::size_t task) {
     const std::size_t level = task / modalities;
     const int scale = 1 << level;
@@ -47,11 +48,22 @@ PreparedScene PrepareAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
       maps[ModalityIndex(Modality::kDepthNormal)] = QuantizeNormals(normals);
     }
   });
-  for (std::size_t level = 0; level < outside_image.size() && level < levels; ++level) {
-    for (cv::Mat& labels : quantized[level]) {
-      if (!labels.empty()) labels.setTo(0, outside_image[level]);
-    }
-  }
+  return quantized;
+}
+
+// `image` (level 0 at `at` in a region of `size`, `at` a multiple of every level's scale) as the
+// region's: zero everywhere else, at every level.
+cv::Mat PadToRegion(const cv::Mat& image, cv::Size size, cv::Point at, int level) {
+  if (image.empty()) return image;
+  for (int k = 0; k < level; ++k) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
+  const cv::Point offset(at.x >> level, at.y >> level);
+  cv::Mat padded = cv::Mat::zeros(size, image.type());
+  image.copyTo(padded(cv::Rect(offset, image.size())));
+  return padded;
+}
+
+PreparedScene Prepared(const QuantizedLevels& quantized, const FeatureOptions& features,
+                       SimdPath simd, cv::Mat& gradient_labels) {
   gradient_labels = quantized[0][ModalityIndex(Modality::kColorGradient)];
   return PreparedScene(quantized, features.spread_px, simd);
 }
@@ -63,8 +75,8 @@ PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            SimdPath simd) {
   std::vector<cv::Mat> depths;
   cv::Mat gradient_labels;
-  return PrepareAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, simd, {}, depths,
-                   gradient_labels);
+  return Prepared(QuantizeAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, depths),
+                  features, simd, gradient_labels);
 }
 
 int RegionAlignmentPx(const FeatureOptions& features) {
@@ -119,26 +131,24 @@ PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth
   if ((aligned & image).empty()) return result;
   result.region_px = aligned;
   const cv::Rect seen = aligned & image;
-  cv::Mat color = color_bgr(seen);
-  cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(seen);
-  const bool padded = seen != aligned;
-  if (padded) {
-    // Past the image the colour goes on as its edge (no gradient across the image's border) and
-    // the depth is missing; the labels there are cleared below, so nothing matches on them.
-    const int top = seen.y - aligned.y;
-    const int left = seen.x - aligned.x;
-    const int bottom = aligned.br().y - seen.br().y;
-    const int right = aligned.br().x - seen.br().x;
-    cv::copyMakeBorder(color, color, top, bottom, left, right, cv::BORDER_REPLICATE);
-    if (!depth.empty()) {
-      cv::copyMakeBorder(depth, depth, top, bottom, left, right, cv::BORDER_CONSTANT,
-                         cv::Scalar(0));
+  const cv::Mat depth = depth_mm.empty() ? cv::Mat() : depth_mm(seen);
+  QuantizedLevels quantized =
+      QuantizeAt(color_bgr(seen), depth, camera, seen.tl(), features, result.depth_levels_mm);
+  if (seen != aligned) {
+    // Past the image there is nothing: no labels, no depth. The image's part is quantized as it
+    // would be alone, then placed in the region (its corner lies on every level's grid).
+    const cv::Point at = seen.tl() - aligned.tl();
+    for (std::size_t level = 0; level < quantized.size(); ++level) {
+      for (cv::Mat& labels : quantized[level]) {
+        labels = PadToRegion(labels, aligned.size(), at, static_cast<int>(level));
+      }
+      result.depth_levels_mm[level] =
+          PadToRegion(result.depth_levels_mm[level], aligned.size(), at, static_cast<int>(level));
     }
     result.outside_image =
         OutsideImageMasks(aligned.size(), features.pyramid_levels, image - aligned.tl());
   }
-  result.scene = PrepareAt(color, depth, camera, aligned.tl(), features, simd, result.outside_image,
-                           result.depth_levels_mm, result.gradient_labels);
+  result.scene = Prepared(quantized, features, simd, result.gradient_labels);
   if (depth.empty()) result.depth_levels_mm.clear();
   return result;
 }
