@@ -124,6 +124,7 @@ void BindDetection(py::module_& m) {
       .def_readonly("contradicted_ratio", &Detection::contradicted_ratio)
       .def_readonly("surface_continuation", &Detection::surface_continuation)
       .def_readonly("color_agreement", &Detection::color_agreement)
+      .def_readonly("outline_agreement", &Detection::outline_agreement)
       .def("__repr__", [](const Detection& d) {
         std::ostringstream text;
         text << "layermod.Detection(obj_id=" << d.obj_id << ", name='" << d.name

@@ -31,6 +31,7 @@ Detection FromCore(const layermod::Detection& core) {
   detection.contradicted_ratio = core.verification.contradicted_ratio;
   detection.surface_continuation = core.verification.surface_continuation;
   detection.color_agreement = core.verification.color_agreement;
+  detection.outline_agreement = core.verification.outline_agreement;
   return detection;
 }
 
@@ -69,6 +70,7 @@ layermod::Detection ToCore(const Detection& detection) {
   core.verification.contradicted_ratio = detection.contradicted_ratio;
   core.verification.surface_continuation = detection.surface_continuation;
   core.verification.color_agreement = detection.color_agreement;
+  core.verification.outline_agreement = detection.outline_agreement;
   core.verification.accepted = true;
   return core;
 }

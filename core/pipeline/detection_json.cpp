@@ -27,7 +27,8 @@ nlohmann::ordered_json DetectionToJson(const Detection& detection) {
             {"occluded_ratio", verification.occluded_ratio},
             {"contradicted_ratio", verification.contradicted_ratio},
             {"surface_continuation", verification.surface_continuation},
-            {"color_agreement", verification.color_agreement}}}};
+            {"color_agreement", verification.color_agreement},
+            {"outline_agreement", verification.outline_agreement}}}};
 }
 
 nlohmann::ordered_json StageTimingsToJson(const StageTimings& t) {

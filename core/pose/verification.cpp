@@ -169,9 +169,12 @@ std::optional<bool> SceneEdgeNear(const GradientLabels& gradients, cv::Point pix
   return false;
 }
 
-double OutlineAgreement(const RenderedView& view, const cv::Mat& depth_mm,
+// `image`: the capture's size. Where the image's border cuts the silhouette there is no outline.
+double OutlineAgreement(const RenderedView& view, const cv::Mat& depth_mm, cv::Size image,
                         const GradientLabels& gradients, double tolerance_mm) {
   if (gradients.labels.empty()) return 0.0;
+  const cv::Rect inner(kPixelStep, kPixelStep, image.width - 2 * kPixelStep,
+                       image.height - 2 * kPixelStep);
   cv::Mat smooth_mask;
   view.mask.convertTo(smooth_mask, CV_32F);
   cv::GaussianBlur(smooth_mask, smooth_mask, cv::Size(5, 5), 1.0, 1.0, cv::BORDER_CONSTANT);
@@ -181,6 +184,7 @@ double OutlineAgreement(const RenderedView& view, const cv::Mat& depth_mm,
     for (int x = 0; x < view.mask.cols; ++x) {
       if (!IsOutline(view.mask, x, y)) continue;
       const cv::Point pixel = CapturePixel(view.roi, x, y);
+      if (!inner.contains(pixel)) continue;
       if (!depth_mm.empty()) {  // an occluder's edges are not the part's
         const float scene = depth_mm.at<float>(pixel);
         if (scene > 0.0f && scene < view.depth_mm.at<float>(y, x) - tolerance_mm) continue;
@@ -231,8 +235,8 @@ Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, con
     result.surface_continuation = SurfaceContinuation(view, depth_mm, options.depth_tolerance_mm);
   }
   result.color_agreement = ColorAgreement(view, color_bgr, options.hue_tolerance_deg);
-  result.outline_agreement =
-      OutlineAgreement(view, depth_mm, gradients, options.depth_tolerance_mm);
+  result.outline_agreement = OutlineAgreement(view, depth_mm, cv::Size(camera.width, camera.height),
+                                              gradients, options.depth_tolerance_mm);
   const bool depth_ok =
       !has_depth || (result.depth_inlier_ratio >= options.min_depth_inlier_ratio &&
                      result.visible_ratio >= options.min_visible_ratio);

@@ -23,12 +23,14 @@ TEST(DetectionJsonTest, PoseInBopConvention) {
   detection.cam_from_model.R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
   detection.cam_from_model.t = Eigen::Vector3d(10, -20, 800);
   detection.ranking = 55.0;
+  detection.verification.outline_agreement = 0.875;
   const nlohmann::ordered_json json = DetectionToJson(detection);
   EXPECT_EQ(json.at("obj_id"), 8);
   EXPECT_EQ(json.at("name"), "driller");
   EXPECT_EQ(json.at("cam_R_m2c"), nlohmann::ordered_json({0, -1, 0, 1, 0, 0, 0, 0, 1}));
   EXPECT_EQ(json.at("cam_t_m2c"), nlohmann::ordered_json({10, -20, 800}));
   EXPECT_DOUBLE_EQ(json.at("ranking").get<double>(), 55.0);
+  EXPECT_DOUBLE_EQ(json.at("verification").at("outline_agreement").get<double>(), 0.875);
 }
 
 TEST(DetectionJsonTest, ResultListsDetectionsAndTimings) {

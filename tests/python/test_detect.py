@@ -56,6 +56,8 @@ def test_poses_equal_those_of_the_cli(detector, archive_path, scenes, image_id, 
         np.testing.assert_allclose(got.R.ravel(), want["cam_R_m2c"], atol=1e-9)
         np.testing.assert_allclose(got.t, want["cam_t_m2c"], atol=1e-6)
         assert got.layer_mm == want["layer_mm"]
+        assert got.outline_agreement == pytest.approx(
+            want["verification"]["outline_agreement"], abs=1e-9)
     # The module's own JSON is the CLI's format.
     assert json.loads(result.to_json())["detections"][0]["cam_t_m2c"] == pytest.approx(
         expected[0]["cam_t_m2c"], abs=1e-6)

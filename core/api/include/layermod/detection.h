@@ -34,6 +34,7 @@ struct Detection {
   double contradicted_ratio = 0.0;    // measured silhouette pixels with the scene behind
   double surface_continuation = 0.0;  // ring outside the outline where the surface goes on
   double color_agreement = 1.0;       // saturated pixels whose hue matches (1 when not judged)
+  double outline_agreement = 0.0;     // outline pixels on a scene edge of their orientation
 };
 
 // Wall time per stage of one Detect call, in ms, summed over objects. Region division and
