@@ -95,7 +95,18 @@ double HueDistanceDeg(int a, int b) {  // OpenCV hue is 0..179 for 0..358 degree
   return 2.0 * std::min(difference, 180 - difference);
 }
 
-double ColorAgreement(const RenderedView& view, const cv::Mat& color_bgr, double tolerance_deg) {
+// Whether the scene lies in front of the model at sparse pixel (x, y): an occluder, whose colour
+// and edges are not the part's. Never without depth.
+bool HiddenByScene(const RenderedView& view, const cv::Mat& depth_mm, int x, int y,
+                   double tolerance_mm) {
+  if (depth_mm.empty()) return false;
+  const float scene = depth_mm.at<float>(CapturePixel(view.roi, x, y));
+  return scene > 0.0f && scene < view.depth_mm.at<float>(y, x) - tolerance_mm;
+}
+
+// Over the silhouette's saturated pixels the scene does not hide.
+double ColorAgreement(const RenderedView& view, const cv::Mat& color_bgr, const cv::Mat& depth_mm,
+                      const VerificationOptions& options) {
   if (color_bgr.empty()) return 1.0;
   cv::Mat scene_bgr(view.roi.size(), CV_8UC3);
   for (int y = 0; y < scene_bgr.rows; ++y) {
@@ -113,9 +124,10 @@ double ColorAgreement(const RenderedView& view, const cv::Mat& color_bgr, double
       if (view.mask.at<std::uint8_t>(y, x) == 0) continue;
       const cv::Vec3b model = model_hsv.at<cv::Vec3b>(y, x);
       if (model[1] < 80 || model[2] < 40) continue;  // hue is meaningless on grey/dark pixels
+      if (HiddenByScene(view, depth_mm, x, y, options.depth_tolerance_mm)) continue;
       ++judged;
       const cv::Vec3b scene = scene_hsv.at<cv::Vec3b>(y, x);
-      if (HueDistanceDeg(model[0], scene[0]) <= tolerance_deg) ++agreeing;
+      if (HueDistanceDeg(model[0], scene[0]) <= options.hue_tolerance_deg) ++agreeing;
     }
   }
   // Fewer than 5 % saturated pixels: the part is texture-less grey, colour says nothing.
@@ -184,11 +196,7 @@ double OutlineAgreement(const RenderedView& view, const cv::Mat& depth_mm, cv::S
     for (int x = 0; x < view.mask.cols; ++x) {
       if (!IsOutline(view.mask, x, y)) continue;
       const cv::Point pixel = CapturePixel(view.roi, x, y);
-      if (!inner.contains(pixel)) continue;
-      if (!depth_mm.empty()) {  // an occluder's edges are not the part's
-        const float scene = depth_mm.at<float>(pixel);
-        if (scene > 0.0f && scene < view.depth_mm.at<float>(y, x) - tolerance_mm) continue;
-      }
+      if (!inner.contains(pixel) || HiddenByScene(view, depth_mm, x, y, tolerance_mm)) continue;
       const int label = OutlineLabel(smooth_mask, x, y);
       if (label < 0) continue;
       const std::optional<bool> near = SceneEdgeNear(gradients, pixel, label);
@@ -234,7 +242,7 @@ Verification VerifyPose(const RenderMesh& mesh, const PinholeCamera& camera, con
     }
     result.surface_continuation = SurfaceContinuation(view, depth_mm, options.depth_tolerance_mm);
   }
-  result.color_agreement = ColorAgreement(view, color_bgr, options.hue_tolerance_deg);
+  result.color_agreement = ColorAgreement(view, color_bgr, depth_mm, options);
   result.outline_agreement = OutlineAgreement(view, depth_mm, cv::Size(camera.width, camera.height),
                                               gradients, options.depth_tolerance_mm);
   const bool depth_ok =

@@ -7,6 +7,7 @@
 
 #include "features/quantize.h"
 #include "pose/pose_test_scene.h"
+#include "render/rasterizer.h"
 
 namespace layermod {
 namespace {
@@ -146,6 +147,25 @@ TEST(VerificationTest, ColourDisagreementRejectsASaturatedModel) {
       VerifyPose(red, test::VgaCamera(), truth, scene.depth_mm, scene.color);
   EXPECT_LT(result.color_agreement, 0.1);
   EXPECT_FALSE(result.accepted);
+}
+
+TEST(VerificationTest, AnOccludersColourIsNotCountedAgainstThePose) {
+  // A saturated red model; a blue bar in front of the left part of the image hides part of it.
+  RenderMesh red = test::SampleRenderMesh();
+  for (auto& color : red.colors) color = Eigen::Vector3f(0.9f, 0.1f, 0.1f);
+  const Pose truth = test::SamplePose(800.0);
+  test::TestScene scene = test::RenderTestScene(truth);
+  const RenderedView seen = RenderView(red, test::VgaCamera(), truth);
+  seen.color.copyTo(scene.color(seen.roi), seen.mask);
+  const cv::Rect bar(0, 0, seen.roi.x + seen.roi.width / 2, 480);
+  scene.color(bar).setTo(cv::Scalar(200, 40, 40));  // BGR blue
+  const Verification without_depth =
+      VerifyPose(red, test::VgaCamera(), truth, cv::Mat(), scene.color);
+  EXPECT_LT(without_depth.color_agreement, 0.7);  // the bar's pixels count as disagreeing
+  scene.depth_mm(bar).setTo(500.0f);
+  const Verification with_depth =
+      VerifyPose(red, test::VgaCamera(), truth, scene.depth_mm, scene.color);
+  EXPECT_GT(with_depth.color_agreement, 0.95);  // they are seen to be in front: not judged
 }
 
 }  // namespace
