@@ -3,6 +3,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -11,11 +12,18 @@
 namespace layermod {
 namespace {
 
+// `origin` is the text's bottom-left; the text is moved inside the image where it would leave it
+// (a part at the image's border).
 void DrawLabel(cv::Mat& canvas, const std::string& text, cv::Point origin,
                const cv::Scalar& color) {
-  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 3,
+  constexpr double kScale = 0.45;
+  int baseline = 0;
+  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, kScale, 3, &baseline);
+  origin.x = std::clamp(origin.x, 0, std::max(0, canvas.cols - size.width));
+  origin.y = std::clamp(origin.y, size.height, std::max(size.height, canvas.rows - baseline));
+  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, kScale, cv::Scalar(0, 0, 0), 3,
               cv::LINE_AA);
-  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.45, color, 1, cv::LINE_AA);
+  cv::putText(canvas, text, origin, cv::FONT_HERSHEY_SIMPLEX, kScale, color, 1, cv::LINE_AA);
 }
 
 cv::Mat BlockPixelMask(const RegionDivision& division, const SceneBlock& block) {
