@@ -122,7 +122,8 @@ class PreparedScene {
 // object's sphere centre, where coarse positioning aims), or the box centre when that offset is
 // zero.
 //
-// Deterministic: sorted by similarity (descending), then template id, then y, then x.
+// Deterministic: sorted by similarity (descending; with occluders, the similarity with the
+// hidden features credited Occluders::hidden_credit), then template id, then y, then x.
 // Throws Error for invalid options or a template with invalid features (naming its id).
 std::vector<RawMatch> MatchTemplates(const PreparedScene& scene,
                                      std::span<const TemplateRecord> templates,
