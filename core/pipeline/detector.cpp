@@ -429,6 +429,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
           : std::optional<Occluders>(
                 MakeOccluders(prepared.scene, prepared.outside_image, kOutsideFeatureScore,
                               cv::Rect(-prepared.region_px.tl(), used.color.size())));
+  const Occluders* border_occluders = border ? &*border : nullptr;
   // Occlusion-aware matching compares the depth with each layer's bound in whole millimetres.
   const std::vector<cv::Mat> occluder_depths_mm =
       scene_patch && options.occlusion == OcclusionMode::kAware
@@ -449,10 +450,9 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
     diagnostics.matches =
         scene_patch
-            ? MatchKeptBlocks(prepared, occluder_depths_mm, border ? &*border : nullptr, archive,
-                              object, entry.facts, entry.largest_template, diagnostics, options)
-            : MatchEveryLayer(prepared, border ? &*border : nullptr, archive, object, entry.facts,
-                              options);
+            ? MatchKeptBlocks(prepared, occluder_depths_mm, border_occluders, archive, object,
+                              entry.facts, entry.largest_template, diagnostics, options)
+            : MatchEveryLayer(prepared, border_occluders, archive, object, entry.facts, options);
   });
   result.timings.match_ms = MsSince(stage_start);
 

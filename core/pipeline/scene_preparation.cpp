@@ -51,21 +51,32 @@ QuantizedLevels QuantizeAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
   return quantized;
 }
 
-// `image` (level 0 at `at` in a region of `size`, `at` a multiple of every level's scale) as the
-// region's: zero everywhere else, at every level.
+// Level `level` of an image whose level 0 lies at `at` in a region (`at` a multiple of every
+// level's scale), placed in that level of the region (`size`): zero everywhere else.
 cv::Mat PadToRegion(const cv::Mat& image, cv::Size size, cv::Point at, int level) {
   if (image.empty()) return image;
-  for (int k = 0; k < level; ++k) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
-  const cv::Point offset(at.x >> level, at.y >> level);
   cv::Mat padded = cv::Mat::zeros(size, image.type());
-  image.copyTo(padded(cv::Rect(offset, image.size())));
+  image.copyTo(padded(cv::Rect(cv::Point(at.x >> level, at.y >> level), image.size())));
   return padded;
 }
 
-PreparedScene Prepared(const QuantizedLevels& quantized, const FeatureOptions& features,
-                       SimdPath simd, cv::Mat& gradient_labels) {
-  gradient_labels = quantized[0][ModalityIndex(Modality::kColorGradient)];
-  return PreparedScene(quantized, features.spread_px, simd);
+int FloorToMultiple(int value, int step) {
+  return (value >= 0 ? value : value - step + 1) / step * step;
+}
+
+int CeilToMultiple(int value, int step) { return FloorToMultiple(value + step - 1, step); }
+
+// Per pyramid level, CV_8UC1 of that level's size: non-zero at the pixels of the padding, those
+// whose level-0 pixel lies outside `image` (given in the region's level-0 pixels). Level k + 1's
+// pixel u stands for level k's pixel 2u, which is what DownsampleNearest keeps.
+std::vector<cv::Mat> OutsideImageMasks(cv::Size size, int levels, const cv::Rect& image) {
+  std::vector<cv::Mat> masks;
+  cv::Mat mask(size, CV_8UC1, cv::Scalar(255));
+  mask(image & cv::Rect(cv::Point(0, 0), size)).setTo(0);
+  for (int level = 0; level < levels; ++level) {
+    masks.push_back(level == 0 ? mask : DownsampleNearest(masks.back()));
+  }
+  return masks;
 }
 
 }  // namespace
@@ -74,44 +85,14 @@ PreparedScene PrepareScene(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                            const PinholeCamera& camera, const FeatureOptions& features,
                            SimdPath simd) {
   std::vector<cv::Mat> depths;
-  cv::Mat gradient_labels;
-  return Prepared(QuantizeAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, depths),
-                  features, simd, gradient_labels);
+  return PreparedScene(QuantizeAt(color_bgr, depth_mm, camera, cv::Point(0, 0), features, depths),
+                       features.spread_px, simd);
 }
 
 int RegionAlignmentPx(const FeatureOptions& features) {
   const int top = features.pyramid_levels - 1;
   return std::max(features.spread_px.at(static_cast<std::size_t>(top)), 1) << top;
 }
-
-namespace {
-
-int FloorToMultiple(int value, int step) {
-  return (value >= 0 ? value : value - step + 1) / step * step;
-}
-
-int CeilToMultiple(int value, int step) { return FloorToMultiple(value + step - 1, step); }
-
-// Per pyramid level, CV_8UC1 of that level's size: non-zero at the pixels of the padding (those
-// whose level-0 pixel lies outside `image`, given in the region's level-0 pixels).
-std::vector<cv::Mat> OutsideImageMasks(cv::Size size, int levels, const cv::Rect& image) {
-  std::vector<cv::Mat> masks;
-  for (int level = 0; level < levels; ++level) {
-    const int scale = 1 << level;
-    if (level > 0) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
-    const cv::Rect inside = cv::Rect(cv::Point(CeilToMultiple(image.x, scale) / scale,
-                                               CeilToMultiple(image.y, scale) / scale),
-                                     cv::Point(CeilToMultiple(image.br().x, scale) / scale,
-                                               CeilToMultiple(image.br().y, scale) / scale)) &
-                            cv::Rect(cv::Point(0, 0), size);
-    cv::Mat mask(size, CV_8UC1, cv::Scalar(255));
-    mask(inside).setTo(0);
-    masks.push_back(mask);
-  }
-  return masks;
-}
-
-}  // namespace
 
 PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
                                   const PinholeCamera& camera, const FeatureOptions& features,
@@ -137,18 +118,18 @@ PreparedRegion PrepareSceneRegion(const cv::Mat& color_bgr, const cv::Mat& depth
   if (seen != aligned) {
     // Past the image there is nothing: no labels, no depth. The image's part is quantized as it
     // would be alone, then placed in the region (its corner lies on every level's grid).
-    const cv::Point at = seen.tl() - aligned.tl();
-    for (std::size_t level = 0; level < quantized.size(); ++level) {
-      for (cv::Mat& labels : quantized[level]) {
-        labels = PadToRegion(labels, aligned.size(), at, static_cast<int>(level));
-      }
-      result.depth_levels_mm[level] =
-          PadToRegion(result.depth_levels_mm[level], aligned.size(), at, static_cast<int>(level));
-    }
     result.outside_image =
         OutsideImageMasks(aligned.size(), features.pyramid_levels, image - aligned.tl());
+    const cv::Point at = seen.tl() - aligned.tl();
+    for (std::size_t level = 0; level < quantized.size(); ++level) {
+      const cv::Size size = result.outside_image[level].size();
+      const int k = static_cast<int>(level);
+      for (cv::Mat& labels : quantized[level]) labels = PadToRegion(labels, size, at, k);
+      result.depth_levels_mm[level] = PadToRegion(result.depth_levels_mm[level], size, at, k);
+    }
   }
-  result.scene = Prepared(quantized, features, simd, result.gradient_labels);
+  result.gradient_labels = quantized[0][ModalityIndex(Modality::kColorGradient)];
+  result.scene = PreparedScene(quantized, features.spread_px, simd);
   if (depth.empty()) result.depth_levels_mm.clear();
   return result;
 }
