@@ -71,6 +71,7 @@ int CeilToMultiple(int value, int step) { return FloorToMultiple(value + step - 
 // pixel u stands for level k's pixel 2u, which is what DownsampleNearest keeps.
 std::vector<cv::Mat> OutsideImageMasks(cv::Size size, int levels, const cv::Rect& image) {
   std::vector<cv::Mat> masks;
+  masks.reserve(static_cast<std::size_t>(levels));
   cv::Mat mask(size, CV_8UC1, cv::Scalar(255));
   mask(image & cv::Rect(cv::Point(0, 0), size)).setTo(0);
   for (int level = 0; level < levels; ++level) {
