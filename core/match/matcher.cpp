@@ -401,10 +401,8 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& fa
   return result;
 }
 
-// The hits refined: the best top-level similarities over all templates, at most
-// max_refinements.
-std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template,
-                                const MatchOptions& options) {
+// The hits refined: the best top-level similarities over all templates, at most `budget`.
+std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template, std::size_t budget) {
   std::vector<RankedHit> ranked;
   for (std::size_t t = 0; t < per_template.size(); ++t) {
     const TemplateHits& source = per_template[t];
@@ -418,7 +416,6 @@ std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template,
     return std::make_tuple(-a.percent, a.template_id, cell_a.y, cell_a.x) <
            std::make_tuple(-b.percent, b.template_id, cell_b.y, cell_b.x);
   };
-  const auto budget = static_cast<std::size_t>(options.max_refinements);
   if (ranked.size() > budget) {
     std::nth_element(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(budget),
                      ranked.end(), better);
@@ -553,6 +550,9 @@ void MatchOptions::Validate() const {
   if (max_refinements < 1) {
     throw Error("match max_refinements must be >= 1, got " + std::to_string(max_refinements));
   }
+  if (tree_refinements < 1) {
+    throw Error("match tree_refinements must be >= 1, got " + std::to_string(tree_refinements));
+  }
   if (!(tree_descend > 0.0f && tree_descend <= 1.0f)) {
     throw Error("tree descend share must be in (0, 1], got " + std::to_string(tree_descend));
   }
@@ -684,14 +684,20 @@ std::vector<float> RepresentativeScores(const TemplateSearch& search, const Cand
   return best;
 }
 
+// Whether `search` goes through its view tree: it has clusters, and the options neither ask
+// for the flat search nor descend into every cluster.
+bool SearchesTree(const TemplateSearch& search, const MatchOptions& options) {
+  return !search.clusters.empty() && options.search == TemplateSearchMode::kTree &&
+         options.tree_descend < 1.0f;
+}
+
 // The templates of `search` to score, as indices into search.templates: all of them, or with
 // view clusters the members of the clusters whose representatives score best (see
 // TemplateSearch).
 std::vector<std::size_t> TemplatesToScore(const TemplateSearch& search, const CandidateArea& area,
                                           const PreparedScene& scene, const MatchOptions& options) {
   std::vector<std::size_t> chosen;
-  if (search.clusters.empty() || options.search == TemplateSearchMode::kFlat ||
-      options.tree_descend >= 1.0f) {
+  if (!SearchesTree(search, options)) {
     chosen.resize(search.templates.size());
     std::iota(chosen.begin(), chosen.end(), std::size_t{0});
     return chosen;
@@ -736,8 +742,10 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   const std::vector<TemplateSearch> complete = WithFacts(searches, worked_out);
   std::vector<CandidateArea> areas;
   std::vector<Work> work;
+  bool through_tree = false;
   areas.reserve(complete.size());
   for (const TemplateSearch& search : complete) {
+    through_tree = through_tree || SearchesTree(search, options);
     const PreparedScene& ranked = search.occluders == nullptr ? scene : search.occluders->ranked;
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
@@ -758,7 +766,9 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                         per_template[i].occluders = work[i].occluders;
                       }
                     });
-  const std::vector<RankedHit> ranked = RankHits(per_template, options);
+  const std::vector<RankedHit> ranked = RankHits(
+      per_template,
+      static_cast<std::size_t>(through_tree ? options.tree_refinements : options.max_refinements));
   const std::vector<std::vector<TemplateLevelSummary>> summaries =
       RefinedSummaries(per_template, ranked, scene);
   std::vector<std::optional<Candidate>> refined(ranked.size());

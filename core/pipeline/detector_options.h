@@ -121,6 +121,11 @@ void VisitDetectorOptions(Options& options, Visitor&& visitor) {
                               "tree (1 = flat search)",
                               matching, 0.001, 1},
           options.match.tree_descend);
+  visitor(DetectorOptionField{"tree_refinements",
+                              "Top-level hits refined per object and frame where layers are "
+                              "searched through their view tree",
+                              matching, 1, 1e7},
+          options.match.tree_refinements);
   visitor(DetectorOptionField{"occlusion",
                               "aware (features on what lies in front of the part are counted "
                               "out of its score) or ignore",

@@ -445,5 +445,32 @@ TEST(MatcherTest, TreeSearchScoresOnlyTheMembersOfTheBestClusters) {
   EXPECT_THROW(options.Validate(), Error);
 }
 
+TEST(MatcherTest, ATreeSearchRefinesWithinTheTreeBudget) {
+  cv::RNG rng(73);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  const PreparedScene prepared = Prepare(scene);
+  // Two clusters of two templates each, all four found where they were cut from.
+  std::vector<TemplateRecord> templates;
+  for (int i = 0; i < 4; ++i) {
+    templates.push_back(test::TemplateFromScene(scene, {20 + 70 * i, 60, 40, 40}, 63,
+                                                static_cast<std::uint32_t>(i), rng));
+  }
+  const std::vector<ViewCluster> clusters = {{0, {0, 1}}, {2, {2, 3}}};
+  const std::vector<TemplateSearch> search = {{templates, nullptr, clusters}};
+  MatchOptions options;
+  options.threshold_percent = 95.0f;
+  options.tree_descend = 0.99f;  // both clusters descended, through the tree
+  options.max_refinements = 4;
+  options.tree_refinements = 1;
+  EXPECT_EQ(MatchTemplateGroups(prepared, search, options).size(), 1u);
+  options.tree_refinements = 3;
+  EXPECT_EQ(MatchTemplateGroups(prepared, search, options).size(), 3u);
+  // The flat search over the same templates keeps max_refinements.
+  options.search = TemplateSearchMode::kFlat;
+  EXPECT_EQ(MatchTemplateGroups(prepared, search, options).size(), 4u);
+  options.tree_refinements = 0;
+  EXPECT_THROW(options.Validate(), Error);
+}
+
 }  // namespace
 }  // namespace layermod
