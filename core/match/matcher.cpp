@@ -17,6 +17,7 @@
 #include <tuple>
 #include <utility>
 
+#include "match/candidate_area.h"
 #include "match/occluders.h"
 #include "match/similarity.h"
 #include "util/error.h"
@@ -46,37 +47,6 @@ struct Refined {
   cv::Point position_px;
   int sum = 0;
 };
-
-// Where the candidate points restrict the search: the level-0 pixels within the radius of some
-// point ("disks"), box-dilated once per call so that one lookup tells whether a template's
-// top-level cell comes near a point (see Reach below).
-struct CandidateArea {
-  bool restricted = false;  // false: every position is searched
-  // Per top-level cell span (level-0 pixels per cell), from the reach map: reach(q - origin) != 0
-  // iff some disk pixel lies in [q.x, q.x + span) x [q.y, q.y + span) (outside the image: no
-  // disk pixel). The map is kept sampled every `span` pixels, once for each of the span x span
-  // phases a template's grid can have against it (index ry * span + rx): cell j of phase
-  // (rx, ry) is reach(j.y * span - ry, j.x * span - rx), 0 outside. A template's near cells are
-  // then a shifted copy of one phase, with no pass over the map per template.
-  struct Reach {
-    int span = 0;
-    cv::Point origin;
-    // Per phase, its non-zero cells as maximal row runs, in scan order.
-    std::vector<std::vector<GridRowSpan>> phase_runs;
-  };
-  std::vector<Reach> by_span;
-
-  const Reach* ForSpan(int span) const {
-    for (const Reach& reach : by_span) {
-      if (reach.span == span) return &reach;
-    }
-    return nullptr;
-  }
-};
-
-int FloorDiv(int value, int divisor) {
-  return value >= 0 ? value / divisor : -((-value + divisor - 1) / divisor);
-}
 
 // The highest level both the template and the scene have that can be scored together with every
 // level below it, i.e. up to the first level without a feature of a modality the scene has
@@ -132,107 +102,6 @@ CandidateGeometry Geometry(const TemplateRecord& record, int top, const SceneLev
                                            static_cast<int>(std::lround(record.centre_offset_px.y)))
                                : half_box;
   return {level.spread_px << top, anchor, half_box};
-}
-
-// The level-0 pixels within radius_px of some point, inside `bounds`: CV_8U over `bounds`.
-cv::Mat StampDisks(const std::vector<cv::Point>& points, int radius_px, const cv::Rect& bounds) {
-  cv::Mat disks = cv::Mat::zeros(bounds.size(), CV_8U);
-  const double radius_sq = static_cast<double>(radius_px) * radius_px;
-  for (const cv::Point& point : points) {
-    const int y0 = std::max(point.y - radius_px, bounds.y);
-    const int y1 = std::min(point.y + radius_px, bounds.br().y - 1);
-    for (int y = y0; y <= y1; ++y) {
-      const double dy = y - point.y;
-      const int half = static_cast<int>(std::floor(std::sqrt(radius_sq - dy * dy)));
-      const int x0 = std::max(point.x - half, bounds.x);
-      const int x1 = std::min(point.x + half, bounds.br().x - 1);
-      if (x0 > x1) continue;
-      std::uint8_t* row = disks.ptr<std::uint8_t>(y - bounds.y);
-      std::fill(row + (x0 - bounds.x), row + (x1 - bounds.x) + 1, std::uint8_t{1});
-    }
-  }
-  return disks;
-}
-
-// The non-zero cells of phase (rx, ry) of the reach map (see CandidateArea::Reach).
-std::vector<GridRowSpan> PhaseRuns(const cv::Mat& reach, int span, int rx, int ry) {
-  std::vector<GridRowSpan> runs;
-  const int cols = (reach.cols - 1 + rx) / span + 1;
-  const int rows = (reach.rows - 1 + ry) / span + 1;
-  for (int jy = ry > 0 ? 1 : 0; jy < rows; ++jy) {
-    const std::uint8_t* reach_row = reach.ptr<std::uint8_t>(jy * span - ry);
-    for (int jx = rx > 0 ? 1 : 0; jx < cols; ++jx) {
-      if (reach_row[jx * span - rx] == 0) continue;
-      if (!runs.empty() && runs.back().row == jy && runs.back().last_column == jx - 1) {
-        runs.back().last_column = jx;
-      } else {
-        runs.push_back({jy, jx, jx});
-      }
-    }
-  }
-  return runs;
-}
-
-// The candidate area of `points` for every top-level span the scene's levels can have.
-CandidateArea MakeCandidateArea(const std::vector<cv::Point>& points, int radius_px,
-                                const PreparedScene& scene) {
-  CandidateArea area;
-  area.restricted = true;
-  if (points.empty()) return area;
-  const cv::Size image = scene.Level(0).size_px;
-  cv::Rect disks_box;
-  for (const cv::Point& point : points) {
-    disks_box |= cv::Rect(point - cv::Point(radius_px, radius_px),
-                          cv::Size(2 * radius_px + 1, 2 * radius_px + 1));
-  }
-  // Anchors lie in or near the template box, hence in or near the image: disks far outside can
-  // never be reached.
-  disks_box &= cv::Rect(-image.width, -image.height, 3 * image.width, 3 * image.height);
-  if (disks_box.empty()) return area;
-  const cv::Mat disks = StampDisks(points, radius_px, disks_box);
-  for (int top = 0; top < scene.LevelCount(); ++top) {
-    const int span = scene.Level(top).spread_px << top;
-    if (area.ForSpan(span) != nullptr) continue;
-    // A window starting up to span - 1 pixels left of or above the disks still reaches them.
-    CandidateArea::Reach reach{span, disks_box.tl() - cv::Point(span - 1, span - 1), {}};
-    cv::Mat padded = cv::Mat::zeros(disks_box.height + span - 1, disks_box.width + span - 1, CV_8U);
-    disks.copyTo(padded(cv::Rect(cv::Point(span - 1, span - 1), disks_box.size())));
-    cv::Mat reach_map;
-    cv::dilate(padded, reach_map, cv::Mat::ones(span, span, CV_8U), cv::Point(0, 0), 1,
-               cv::BORDER_CONSTANT, cv::Scalar(0));
-    reach.phase_runs.reserve(static_cast<std::size_t>(span) * static_cast<std::size_t>(span));
-    for (int ry = 0; ry < span; ++ry) {
-      for (int rx = 0; rx < span; ++rx) {
-        reach.phase_runs.push_back(PhaseRuns(reach_map, span, rx, ry));
-      }
-    }
-    area.by_span.push_back(std::move(reach));
-  }
-  return area;
-}
-
-// The top-level cells near some candidate point, as merged row spans in scan order (scored
-// without a pass over the whole grid), into `spans`. Cell (gx, gy) puts the template's anchor in
-// [gx * span, (gx + 1) * span) + anchor, so it is near when the reach map says so there: cell
-// g is cell g - shift of one phase of the sampled reach map.
-void NearCells(const CandidateGeometry& geometry, const cv::Size& cells, const CandidateArea& area,
-               std::vector<GridRowSpan>& spans) {
-  spans.clear();
-  const int span = geometry.cell_span_px;
-  const CandidateArea::Reach* reach = area.ForSpan(span);
-  if (reach == nullptr) return;
-  const cv::Point first = reach->origin - geometry.anchor;  // window corner of reach(0, 0)
-  const cv::Point shift(FloorDiv(first.x, span), FloorDiv(first.y, span));
-  const cv::Point residue = first - shift * span;
-  const std::vector<GridRowSpan>& runs =
-      reach->phase_runs[static_cast<std::size_t>(residue.y) * span + residue.x];
-  for (const GridRowSpan& run : runs) {
-    const int gy = run.row + shift.y;
-    if (gy < 0 || gy >= cells.height) continue;
-    const int gx0 = std::max(run.first_column + shift.x, 0);
-    const int gx1 = std::min(run.last_column + shift.x, cells.width - 1);
-    if (gx0 <= gx1) spans.push_back({gy, gx0, gx1});
-  }
 }
 
 // The hits, best first, at most `max_hits`.
@@ -384,7 +253,7 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& fa
   const CandidateGeometry geometry = Geometry(record, top, top_level);
   thread_local std::vector<GridRowSpan> scored;  // reused: one template after another
   if (area.restricted) {
-    NearCells(geometry, cells, area, scored);
+    NearCells(geometry.cell_span_px, geometry.anchor, cells, area, scored);
   } else {
     scored = AllCells(cells);
   }
@@ -741,6 +610,10 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   std::deque<std::vector<TemplateFacts>> worked_out;
   const std::vector<TemplateSearch> complete = WithFacts(searches, worked_out);
   std::vector<CandidateArea> areas;
+  std::vector<int> spans;  // the top-level cell spans templates can have on this scene
+  for (int level = 0; level < scene.LevelCount(); ++level) {
+    spans.push_back(scene.Level(level).spread_px << level);
+  }
   std::vector<Work> work;
   bool through_tree = false;
   areas.reserve(complete.size());
@@ -749,7 +622,8 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
     const PreparedScene& ranked = search.occluders == nullptr ? scene : search.occluders->ranked;
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
-                        : MakeCandidateArea(*search.candidate_points, radius_px, scene));
+                        : MakeCandidateArea(*search.candidate_points, radius_px,
+                                            scene.Level(0).size_px, spans));
     for (const std::size_t index : TemplatesToScore(search, areas.back(), ranked, options)) {
       work.push_back({&search.templates[index], &search.facts[index], &areas.back(), &ranked,
                       search.occluders});
