@@ -170,19 +170,26 @@ std::optional<Refined> RefineInWindow(const TemplateLevel& level, const SceneLev
   const LocalSimilarity local =
       ComputeLocalSimilarity(level, scene, summary, window_px, similarity);
   if (local.window_px.empty() || local.feature_count == 0) return std::nullopt;
-  double max_sum = 0;
-  cv::minMaxLoc(local.sums, nullptr, &max_sum);
-  const cv::Point2d centre(window_px.x + (window_px.width - 1) / 2.0,
-                           window_px.y + (window_px.height - 1) / 2.0);
+  // The positions of the highest sum, in scan order, found in one pass.
   Refined best;
-  best.sum = static_cast<int>(max_sum);
-  std::vector<cv::Point> ties;
+  best.sum = -1;
+  thread_local std::vector<cv::Point> ties;  // reused: one window after another
+  ties.clear();
   for (int r = 0; r < local.sums.rows; ++r) {
     const auto* row = local.sums.ptr<std::uint16_t>(r);
     for (int c = 0; c < local.sums.cols; ++c) {
-      if (row[c] == best.sum) ties.emplace_back(local.window_px.x + c, local.window_px.y + r);
+      if (row[c] < best.sum) continue;
+      if (row[c] > best.sum) {
+        best.sum = row[c];
+        ties.clear();
+      }
+      ties.emplace_back(local.window_px.x + c, local.window_px.y + r);
     }
   }
+  best.position_px = ties.front();
+  if (ties.size() == 1) return best;  // nothing to break
+  const cv::Point2d centre(window_px.x + (window_px.width - 1) / 2.0,
+                           window_px.y + (window_px.height - 1) / 2.0);
   const std::vector<int> exact = ExactAlignmentScores(level, scene, summary, ties);
   std::optional<std::tuple<int, double>> best_key;  // (-exact score, squared distance to centre)
   for (std::size_t i = 0; i < ties.size(); ++i) {
