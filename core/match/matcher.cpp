@@ -5,7 +5,6 @@
 #include <tbb/collaborative_call_once.h>
 #include <tbb/parallel_for.h>
 
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
