@@ -21,9 +21,10 @@ import sys
 
 import numpy as np
 
+# In the order of ConfidenceFeatures::Names (core/pipeline/confidence.cpp).
 FEATURES = ["score", "depth_fit", "depth_inlier_ratio", "visible_ratio", "occluded_ratio",
             "contradicted_ratio", "surface_continuation", "color_agreement", "icp_inlier_ratio",
-            "icp_rmse"]
+            "icp_rmse", "outline_agreement"]
 DEPTH_FREE = ["score", "color_agreement"]
 
 
