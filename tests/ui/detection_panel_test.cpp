@@ -25,6 +25,7 @@
 #include "ui/common/studio_session.h"
 #include "ui/detection/detection_options_form.h"
 #include "ui/detection/detection_panel.h"
+#include "ui/detection/detection_table.h"
 #include "ui/detection/ground_truth_text.h"
 #include "ui/detection/image_view.h"
 #include "ui/scene3d/scene_view.h"
@@ -58,6 +59,16 @@ class DetectionPanelTest : public QObject {
     QVERIFY(panel->table()->rowCount() >= 1);
     QVERIFY2(panel->table()->item(0, 0)->text().contains("bracket"),
              qPrintable(panel->table()->item(0, 0)->text()));
+    // The checks the confidence came from: in their column and, in full, in the row's tooltip.
+    const int checks = static_cast<int>(DetectionColumnTitles().indexOf("Checks"));
+    QVERIFY(checks > 0);
+    const QString checks_text = panel->table()->item(0, checks)->text();
+    QVERIFY2(checks_text.contains("depth") && checks_text.contains("outline"),
+             qPrintable(checks_text));
+    const QString tooltip = panel->table()->item(0, 0)->toolTip();
+    QVERIFY2(tooltip.contains("depth fit") && tooltip.contains("contradicted") &&
+                 tooltip.contains("outline on scene edges"),
+             qPrintable(tooltip));
     QVERIFY(window_->findChild<QLabel*>("timingsLabel")->text().contains("total"));
     QVERIFY(window_->findChild<QLabel*>("layerLegend")->text().contains("mm"));
   }
@@ -130,6 +141,32 @@ class DetectionPanelTest : public QObject {
     QCOMPARE(restored.options().match.max_refinements, 500);
     restored.SetOptions(DetectorOptions{});
     restored.SaveSettings();  // leave the defaults for the other tests
+  }
+
+  void TableRowsNameTheChecksOfTheirConfidence() {
+    Detection detection;
+    detection.name = "part";
+    detection.confidence = 0.42;
+    detection.score = 81.0;
+    detection.verification.depth_fit = 0.61;
+    detection.verification.contradicted_ratio = 0.25;
+    detection.verification.color_agreement = 0.93;
+    detection.verification.outline_agreement = 0.48;
+    detection.icp.iterations = 12;
+    const QStringList texts = DetectionRowTexts(detection);
+    QCOMPARE(texts.size(), DetectionColumnTitles().size());
+    QCOMPARE(texts[DetectionColumnTitles().indexOf("Checks")],
+             QString("depth 0.61 · colour 0.93 · outline 0.48"));
+    const QString tooltip = VerificationTooltip(detection);
+    QVERIFY2(tooltip.startsWith("Confidence 0.42, from:") &&
+                 tooltip.contains("contradicted 0.25") &&
+                 tooltip.contains("outline on scene edges 0.48"),
+             qPrintable(tooltip));
+    // Without depth (no ICP) only what the colour image tells is shown.
+    detection.icp.iterations = 0;
+    QCOMPARE(DetectionRowTexts(detection)[DetectionColumnTitles().indexOf("Checks")],
+             QString("colour 0.93 · outline 0.48"));
+    QVERIFY(!VerificationTooltip(detection).contains("depth"));
   }
 
   void SettingsFormIsTheFieldTable() {

@@ -21,12 +21,48 @@ QString RotationText(const Eigen::Matrix3d& rotation) {
            Number(axis.z(), 2));
 }
 
+// Whether the pose was checked against depth: without depth there is no ICP and no depth
+// measure, only colour and outline.
+bool CheckedAgainstDepth(const Detection& detection) { return detection.icp.iterations > 0; }
+
+// The checks that tell right poses from wrong ones best, in one cell: "depth 0.91 · colour 1.00
+// · outline 0.97".
+QString ChecksText(const Detection& detection) {
+  const Verification& v = detection.verification;
+  const QString colour_and_outline =
+      QObject::tr("colour %1 · outline %2")
+          .arg(Number(v.color_agreement, 2), Number(v.outline_agreement, 2));
+  if (!CheckedAgainstDepth(detection)) return colour_and_outline;
+  return QObject::tr("depth %1 · ").arg(Number(v.depth_fit, 2)) + colour_and_outline;
+}
+
 }  // namespace
 
 QStringList DetectionColumnTitles() {
-  return {QObject::tr("Object"), QObject::tr("Confidence"),    QObject::tr("Score"),
-          QObject::tr("Layer"),  QObject::tr("Position (mm)"), QObject::tr("Rotation"),
-          QObject::tr("ICP")};
+  return {QObject::tr("Object"),   QObject::tr("Confidence"), QObject::tr("Score"),
+          QObject::tr("Checks"),   QObject::tr("Layer"),      QObject::tr("Position (mm)"),
+          QObject::tr("Rotation"), QObject::tr("ICP")};
+}
+
+QString VerificationTooltip(const Detection& detection) {
+  const Verification& v = detection.verification;
+  QStringList lines;
+  lines << QObject::tr("Confidence %1, from:").arg(Number(detection.confidence, 2))
+        << QObject::tr("match score %1 %").arg(Number(detection.score));
+  if (CheckedAgainstDepth(detection)) {
+    lines << QObject::tr("depth fit %1, depth inliers %2")
+                 .arg(Number(v.depth_fit, 2), Number(v.depth_inlier_ratio, 2))
+          << QObject::tr("silhouette: visible %1, occluded %2, contradicted %3")
+                 .arg(Number(v.visible_ratio, 2), Number(v.occluded_ratio, 2),
+                      Number(v.contradicted_ratio, 2))
+          << QObject::tr("surface continuing past the outline %1")
+                 .arg(Number(v.surface_continuation, 2))
+          << QObject::tr("ICP %1 mm rms, %2 of the samples fit")
+                 .arg(Number(detection.icp.rmse_mm, 2), Number(detection.icp.inlier_ratio, 2));
+  }
+  lines << QObject::tr("colour agreement %1").arg(Number(v.color_agreement, 2))
+        << QObject::tr("outline on scene edges %1").arg(Number(v.outline_agreement, 2));
+  return lines.join('\n');
 }
 
 QStringList DetectionRowTexts(const Detection& detection) {
@@ -40,6 +76,7 @@ QStringList DetectionRowTexts(const Detection& detection) {
       object,
       Number(detection.confidence, 2),
       QStringLiteral("%1 %").arg(Number(detection.score)),
+      ChecksText(detection),
       QObject::tr("%1: %2 mm").arg(detection.layer_index).arg(Number(detection.layer_depth_mm, 0)),
       QStringLiteral("(%1, %2, %3)").arg(Number(t.x()), Number(t.y()), Number(t.z())),
       RotationText(detection.cam_from_model.R),
@@ -52,9 +89,13 @@ void FillDetectionTable(QTableWidget* table, const std::vector<Detection>& detec
   table->setHorizontalHeaderLabels(DetectionColumnTitles());
   table->setRowCount(static_cast<int>(detections.size()));
   for (int row = 0; row < table->rowCount(); ++row) {
-    const QStringList texts = DetectionRowTexts(detections[static_cast<std::size_t>(row)]);
+    const Detection& detection = detections[static_cast<std::size_t>(row)];
+    const QStringList texts = DetectionRowTexts(detection);
+    const QString tooltip = VerificationTooltip(detection);
     for (int column = 0; column < texts.size(); ++column) {
-      table->setItem(row, column, new QTableWidgetItem(texts[column]));
+      auto* item = new QTableWidgetItem(texts[column]);
+      item->setToolTip(tooltip);
+      table->setItem(row, column, item);
     }
   }
   table->resizeColumnsToContents();

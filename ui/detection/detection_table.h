@@ -10,10 +10,12 @@ class QTableWidget;
 
 namespace layermod::ui {
 
-// Column titles of the detections table, and one row's texts (object, score, layer, position,
-// rotation, ICP residual).
+// Column titles of the detections table, and one row's texts (object, confidence, score, the
+// verification's main checks, layer, position, rotation, ICP residual).
 QStringList DetectionColumnTitles();
 QStringList DetectionRowTexts(const Detection& detection);
+// What the confidence was worked out from, one measure per line: the row's tooltip.
+QString VerificationTooltip(const Detection& detection);
 // Replaces the table's rows with `detections`, best first.
 void FillDetectionTable(QTableWidget* table, const std::vector<Detection>& detections);
 
