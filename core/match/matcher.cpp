@@ -616,6 +616,7 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   const std::vector<TemplateSearch> complete = WithFacts(searches, worked_out);
   std::vector<CandidateArea> areas;
   std::vector<int> spans;  // the top-level cell spans templates can have on this scene
+  spans.reserve(static_cast<std::size_t>(scene.LevelCount()));
   for (int level = 0; level < scene.LevelCount(); ++level) {
     spans.push_back(scene.Level(level).spread_px << level);
   }

@@ -29,7 +29,7 @@ bool CheckedAgainstDepth(const Detection& detection) { return detection.icp.iter
 // · outline 0.97".
 QString ChecksText(const Detection& detection) {
   const Verification& v = detection.verification;
-  const QString colour_and_outline =
+  QString colour_and_outline =
       QObject::tr("colour %1 · outline %2")
           .arg(Number(v.color_agreement, 2), Number(v.outline_agreement, 2));
   if (!CheckedAgainstDepth(detection)) return colour_and_outline;
