@@ -70,8 +70,8 @@ void AddBenchCommand(CLI::App& app) {
   command->add_flag("--color-only", args->color_only,
                     "RGB datasets: LINE-2D (color-only mode) vs cv::linemod LINE-2D");
   command->add_flag("--tree-vs-flat", args->tree_vs_flat,
-                    "Large archives: Scene-Patch with the view tree (--tree-descend) vs the flat "
-                    "search, no cv::linemod");
+                    "Large archives: the view tree (--tree-descend) vs the flat search, in the "
+                    "--mode asked for (default scene-patch), no cv::linemod");
   command->add_option("--out", args->out, "bench.json to write")->required();
   command->callback([args] { RunBenchCommand(*args); });
 }

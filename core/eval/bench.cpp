@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
 
 #include "eval/evaluation.h"
 #include "util/version.h"
@@ -25,10 +27,11 @@ EvalMethod DetectorModeMethod(const Detector& detector, DetectorOptions options,
   return DetectorMethod(detector, options);
 }
 
-EvalMethod ScenePatchMethod(const Detector& detector, const DetectorOptions& options,
-                            std::string name) {
-  EvalMethod method = DetectorModeMethod(detector, options, DetectionMode::kScenePatch);
-  method.name = std::move(name);
+// The detector in the options' own mode (`layermod bench --mode`), named "<mode> <search>".
+EvalMethod SearchMethod(const Detector& detector, const DetectorOptions& options,
+                        std::string_view search) {
+  EvalMethod method = DetectorMethod(detector, options);
+  method.name = std::string(ModeName(options.mode)) + " " + std::string(search);
   return method;
 }
 
@@ -104,8 +107,8 @@ BenchResult RunBench(const Detector& detector, BenchSuite suite,
   std::vector<EvalMethod> methods;
   std::unique_ptr<OpenCvLinemod> linemod;  // outlives the methods that call it
   if (suite == BenchSuite::kTreeVsFlat) {
-    methods = {ScenePatchMethod(detector, detector_options, "scene-patch tree"),
-               ScenePatchMethod(detector, FlatSearch(detector_options), "scene-patch flat")};
+    methods = {SearchMethod(detector, detector_options, "tree"),
+               SearchMethod(detector, FlatSearch(detector_options), "flat")};
   } else {
     OpenCvLinemodOptions linemod_options;
     linemod_options.threshold_percent = detector_options.match.threshold_percent;

@@ -80,5 +80,23 @@ TEST(BenchTest, TreeVsFlatSuiteRunsBothSearchesWithoutLinemod) {
   EXPECT_EQ(SuiteName(result.suite), "tree-vs-flat");
 }
 
+TEST(BenchTest, TreeVsFlatSuiteRunsInTheModeAskedFor) {
+  test::TempDir dir;
+  const test::TinyEvalData data = test::MakeTinyEvalData(dir.path(), kImages);
+  const Detector detector({data.archive});
+  DetectorOptions options;
+  options.mode = DetectionMode::kExhaustive;
+  const BenchResult result =
+      RunBench(detector, BenchSuite::kTreeVsFlat, options, data.dataset, {}, {});
+  ASSERT_EQ(result.methods.size(), 2u);
+  EXPECT_EQ(result.methods[0].name, "exhaustive tree");
+  EXPECT_EQ(result.methods[1].name, "exhaustive flat");
+  // The same as the depth suite's exhaustive run, which the options' mode does not change.
+  const BenchResult depth = RunBench(detector, BenchSuite::kDepth, {}, data.dataset, {}, {});
+  ASSERT_EQ(depth.methods[1].name, "exhaustive");
+  EXPECT_EQ(result.methods[0].overall.correct, depth.methods[1].overall.correct);
+  EXPECT_EQ(result.methods[0].overall.detected, depth.methods[1].overall.detected);
+}
+
 }  // namespace
 }  // namespace layermod
