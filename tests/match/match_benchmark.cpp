@@ -4,6 +4,9 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include <array>
+
+#include "match/candidate_area.h"
 #include "match/matcher.h"
 #include "match_test_util.h"
 
@@ -126,6 +129,29 @@ void BenchMatchScatteredPoints(benchmark::State& state) {
   RunMatch(state, &Data().scattered_points, SimdPath::kAuto);
 }
 BENCHMARK(BenchMatchScatteredPoints)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The candidate area of one depth layer's kept points as Scene-Patch coarse positioning yields
+// them: every 8 px over two 200 x 150 px blocks (about 950 points), within 8 px, for the cell
+// spans of both pyramid levels; then every phase's near cells of 2,000 anchors.
+void BenchCandidateArea(benchmark::State& state) {
+  std::vector<cv::Point> points;
+  for (const cv::Point corner : {cv::Point(100, 80), cv::Point(320, 260)}) {
+    for (int y = 0; y < 150; y += 8) {
+      for (int x = 0; x < 200; x += 8) points.push_back(corner + cv::Point(x, y));
+    }
+  }
+  const std::array<int, 2> spans = {8, 16};
+  std::vector<GridRowSpan> cells;
+  for (auto _ : state) {
+    const CandidateArea area = MakeCandidateArea(points, 8, cv::Size(640, 480), spans);
+    for (int anchor = 0; anchor < kTemplateCount; ++anchor) {
+      NearCells(16, cv::Point(anchor % 61, anchor % 53), cv::Size(40, 30), area, cells);
+      benchmark::DoNotOptimize(cells.data());
+    }
+  }
+  state.counters["points"] = static_cast<double>(points.size());
+}
+BENCHMARK(BenchCandidateArea)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace layermod
