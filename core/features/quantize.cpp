@@ -29,12 +29,6 @@ inline int CentredOctant(float x, float y) {
   return Octant(kCos * x - kSin * y, kSin * x + kCos * y);
 }
 
-// Orientation label of a gradient, sign ignored: doubling the angle maps g and -g to the same
-// direction; bins of 45 deg on the doubled angle are bins of 22.5 deg on the orientation.
-inline int GradientLabel(float dx, float dy) {
-  return CentredOctant(dx * dx - dy * dy, 2.0f * dx * dy);
-}
-
 // Row scratch of the gradient stage, reused for every row: no image-sized temporaries besides the
 // blurred image (their page faults used to cost as much as the arithmetic).
 struct GradientRowScratch {
@@ -94,7 +88,8 @@ void StrongestChannelRow(const GradientRowScratch& scratch, int width, float wea
     magnitude[x] = best_sq;  // squared for now: one vectorised sqrt pass below
     // Most pixels are weak: a branch skips their label.
     const int i = 3 * x + best;
-    vote[x] = best_sq > weak_sq ? 1u << (4 * GradientLabel(scratch.gx[i], scratch.gy[i])) : 0u;
+    vote[x] =
+        best_sq > weak_sq ? 1u << (4 * GradientOrientationLabel(scratch.gx[i], scratch.gy[i])) : 0u;
   }
   for (int x = 0; x < width; ++x) magnitude[x] = std::sqrt(magnitude[x]);
 }
@@ -112,6 +107,12 @@ inline std::uint8_t MajorityBit(std::uint32_t packed_counts) {
 }
 
 }  // namespace
+
+// Doubling the angle maps g and -g to the same direction; bins of 45 deg on the doubled angle are
+// bins of 22.5 deg on the orientation.
+int GradientOrientationLabel(float dx, float dy) {
+  return CentredOctant(dx * dx - dy * dy, 2.0f * dx * dy);
+}
 
 cv::Mat QuantizeColorGradients(const cv::Mat& bgr, float weak_magnitude, cv::Mat* magnitude_out) {
   if (bgr.type() != CV_8UC3) throw Error("QuantizeColorGradients: expected a CV_8UC3 BGR image");

@@ -33,6 +33,10 @@ inline int LabelOfBit(std::uint8_t bit) {
 
 // Centre of a gradient label's bin: orientation in degrees over 0..180 (image x right, y down).
 inline float GradientLabelAngleDeg(int label) { return static_cast<float>(label) * 22.5f; }
+// Gradient label 0..7 of the gradient (dx, dy), sign ignored: the bins of
+// QuantizeColorGradients (label k covers 22.5 k +- 11.25 deg). (0, 0) has no orientation; callers
+// exclude it.
+int GradientOrientationLabel(float dx, float dy);
 // Direction of (nx, ny) that a normal label stands for, in degrees over 0..360 (image axes).
 inline float NormalLabelAngleDeg(int label) { return static_cast<float>(label) * 45.0f; }
 

@@ -92,6 +92,9 @@ struct CandidateGeometry {
   cv::Point half_box;    // level-0 box top-left -> box centre (for duplicate suppression)
 };
 
+// Level-0 pixels per grid cell of pyramid level `level` (spread T there, times 2^level).
+int CellSpanPx(const SceneLevel& scene_level, int level) { return scene_level.spread_px << level; }
+
 CandidateGeometry Geometry(const TemplateRecord& record, int top, const SceneLevel& level) {
   const cv::Point half_box(record.levels[0].width / 2, record.levels[0].height / 2);
   const bool has_anchor = record.centre_offset_px != cv::Point2f(0.0f, 0.0f);
@@ -99,7 +102,7 @@ CandidateGeometry Geometry(const TemplateRecord& record, int top, const SceneLev
                                ? cv::Point(static_cast<int>(std::lround(record.centre_offset_px.x)),
                                            static_cast<int>(std::lround(record.centre_offset_px.y)))
                                : half_box;
-  return {level.spread_px << top, anchor, half_box};
+  return {CellSpanPx(level, top), anchor, half_box};
 }
 
 // The hits, best first, at most `max_hits`.
@@ -618,7 +621,7 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   std::vector<int> spans;  // the top-level cell spans templates can have on this scene
   spans.reserve(static_cast<std::size_t>(scene.LevelCount()));
   for (int level = 0; level < scene.LevelCount(); ++level) {
-    spans.push_back(scene.Level(level).spread_px << level);
+    spans.push_back(CellSpanPx(scene.Level(level), level));
   }
   std::vector<Work> work;
   bool through_tree = false;

@@ -36,7 +36,7 @@ struct Occluders {
   // scored as without occluders.
   cv::Rect clear_px;
   // The scene templates are ranked on: above level 0, its linear memories score at least
-  // kHiddenFeatureScore at occluder pixels for every feature (its response maps, which only
+  // `hidden_credit` at occluder pixels for every feature (its response maps, which only
   // refinement reads, are the scene's); level 0 (the top level only of templates without
   // coarser features) as the scene is.
   PreparedScene ranked;

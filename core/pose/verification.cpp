@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "features/quantize.h"
 #include "render/rasterizer.h"
 #include "util/error.h"
 
@@ -135,8 +136,8 @@ double ColorAgreement(const RenderedView& view, const cv::Mat& color_bgr, const 
   return static_cast<double>(agreeing) / judged;
 }
 
-// Gradient label (0..7, 22.5 deg bins over 0..180 deg, features/quantize.h) of the outline's
-// normal at sparse pixel (x, y): the direction across which the smoothed mask changes.
+// Gradient label (GradientOrientationLabel: the scene labels' bins) of the outline's normal at
+// sparse pixel (x, y): the direction across which the smoothed mask changes; -1 where it is flat.
 int OutlineLabel(const cv::Mat& smooth_mask, int x, int y) {
   const auto at = [&](int u, int v) {
     u = std::clamp(u, 0, smooth_mask.cols - 1);
@@ -148,9 +149,7 @@ int OutlineLabel(const cv::Mat& smooth_mask, int x, int y) {
   const double gy = at(x - 1, y + 1) + 2.0 * at(x, y + 1) + at(x + 1, y + 1) - at(x - 1, y - 1) -
                     2.0 * at(x, y - 1) - at(x + 1, y - 1);
   if (gx == 0.0 && gy == 0.0) return -1;
-  double angle = RadToDeg(std::atan2(gy, gx));
-  if (angle < 0.0) angle += 180.0;
-  return static_cast<int>(std::lround(angle / 22.5)) % 8;
+  return GradientOrientationLabel(static_cast<float>(gx), static_cast<float>(gy));
 }
 
 bool IsOutline(const cv::Mat& mask, int x, int y) {

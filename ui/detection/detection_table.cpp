@@ -69,7 +69,7 @@ QStringList DetectionRowTexts(const Detection& detection) {
   const Eigen::Vector3d& t = detection.cam_from_model.t;
   const QString object =
       QStringLiteral("%1 (%2)").arg(QString::fromStdString(detection.name)).arg(detection.obj_id);
-  const QString icp = detection.icp.iterations > 0
+  const QString icp = CheckedAgainstDepth(detection)
                           ? QObject::tr("%1 mm rms").arg(Number(detection.icp.rmse_mm, 2))
                           : QObject::tr("not refined");
   return {
