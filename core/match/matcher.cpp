@@ -497,21 +497,26 @@ const SceneLevel& PreparedScene::LinearizedLevel(int level) const {
   return lazy.level;
 }
 
-TemplateFacts TemplateFactsOf(const TemplateRecord& record) {
+TemplateFacts TemplateFactsOf(const TemplateRecord& record, std::span<const int> spread_px) {
   TemplateFacts facts;
   facts.reserve(record.levels.size());
   try {
-    for (const TemplateLevel& level : record.levels) facts.push_back(LevelFacts(level));
+    for (std::size_t level = 0; level < record.levels.size(); ++level) {
+      const bool top = level + 1 == record.levels.size();
+      const int spread = top && level < spread_px.size() ? spread_px[level] : 0;
+      facts.push_back(LevelFacts(record.levels[level], spread));
+    }
   } catch (const Error& error) {
     throw Error("template " + std::to_string(record.id) + ": " + error.what());
   }
   return facts;
 }
 
-std::vector<TemplateFacts> TemplateFactsOf(std::span<const TemplateRecord> templates) {
+std::vector<TemplateFacts> TemplateFactsOf(std::span<const TemplateRecord> templates,
+                                           std::span<const int> spread_px) {
   std::vector<TemplateFacts> facts(templates.size());
   tbb::parallel_for(std::size_t{0}, templates.size(),
-                    [&](std::size_t i) { facts[i] = TemplateFactsOf(templates[i]); });
+                    [&](std::size_t i) { facts[i] = TemplateFactsOf(templates[i], spread_px); });
   return facts;
 }
 

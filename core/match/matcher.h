@@ -163,10 +163,13 @@ struct TemplateSearch {
   const Occluders* occluders = nullptr;       // nullptr: none
   std::span<const TemplateFacts> facts = {};  // parallel to `templates`, or empty
 };
-// LevelFacts of every level; throws Error naming the template for invalid features.
-TemplateFacts TemplateFactsOf(const TemplateRecord& record);
+// LevelFacts of every level; throws Error naming the template for invalid features. With the
+// scene's spread per pyramid level (`spread_px`, FeatureOptions::spread_px), the top level, the
+// one scored on the grid, gets its grid features (about 4 bytes per feature).
+TemplateFacts TemplateFactsOf(const TemplateRecord& record, std::span<const int> spread_px = {});
 // The facts of each template, in their order (in parallel).
-std::vector<TemplateFacts> TemplateFactsOf(std::span<const TemplateRecord> templates);
+std::vector<TemplateFacts> TemplateFactsOf(std::span<const TemplateRecord> templates,
+                                           std::span<const int> spread_px = {});
 inline constexpr float kRepresentativeMarginPercent = 20.0f;
 std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
                                           std::span<const TemplateSearch> searches,

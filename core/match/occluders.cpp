@@ -30,6 +30,7 @@ SceneLevel WithHiddenPixels(const SceneLevel& source, const cv::Mat& mask, int h
       memory = ResponseAtLeast(memory, floors);
     }
   }
+  IndexMemoryRows(level);  // the copy's table still points into `source`
   return level;
 }
 

@@ -67,6 +67,25 @@ void LinearizeSceneLevel(SceneLevel& level) {
     level.memories[m].grid_size = level.memories[m].orientations[0].grid_size;
   }
   level.linearized = true;
+  IndexMemoryRows(level);
+}
+
+void IndexMemoryRows(SceneLevel& level) {
+  const int spread = level.spread_px;
+  level.memory_rows.assign(static_cast<std::size_t>(MemoryRowKey(kModalityCount, 0, 0, 0, spread)),
+                           nullptr);
+  for (int m = 0; m < kModalityCount; ++m) {
+    if (!level.present[m]) continue;
+    for (int label = 0; label < kOrientationCount; ++label) {
+      const LinearMemory& memory = level.memories[m].orientations[label];
+      for (int y = 0; y < spread; ++y) {
+        for (int x = 0; x < spread; ++x) {
+          level.memory_rows[static_cast<std::size_t>(MemoryRowKey(m, label, x, y, spread))] =
+              memory.Memory(y, x);
+        }
+      }
+    }
+  }
 }
 
 SceneLevel BuildSceneLevel(const std::array<cv::Mat, kModalityCount>& quantized, int spread_px,

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "features/feature.h"
 #include "match/linear_memory.h"
@@ -29,6 +31,9 @@ struct SceneLevel {
   bool linearized = false;
   // Which modalities are present; a plain flag because the matcher asks per feature.
   std::array<bool, kModalityCount> present{};
+  // With the linear memories: the first cell of each memory, at MemoryRowKey (IndexMemoryRows);
+  // nullptr for an absent modality. Grid scoring reads a feature's memory through it.
+  std::vector<const std::uint8_t*> memory_rows;
 
   bool HasModality(Modality modality) const {
     const int index = ModalityIndex(modality);
@@ -44,6 +49,14 @@ SceneLevel BuildSceneResponses(const std::array<cv::Mat, kModalityCount>& quanti
 
 // Adds the linear memories of every present modality (no-op when already linearized).
 void LinearizeSceneLevel(SceneLevel& level);
+
+// The index into SceneLevel::memory_rows of the memory that holds orientation `label` of
+// modality index `modality` at offset (phase_x, phase_y) within a T x T cell.
+constexpr int MemoryRowKey(int modality, int label, int phase_x, int phase_y, int spread_px) {
+  return ((modality * kOrientationCount + label) * spread_px + phase_y) * spread_px + phase_x;
+}
+// Fills SceneLevel::memory_rows from its linear memories; whatever replaces them calls it again.
+void IndexMemoryRows(SceneLevel& level);
 
 // Both: spread -> response maps -> linear memories.
 SceneLevel BuildSceneLevel(const std::array<cv::Mat, kModalityCount>& quantized, int spread_px,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "match/response_maps.h"
+#include "match/spread.h"
 #include "util/error.h"
 
 namespace layermod {
@@ -206,6 +207,39 @@ cv::Rect ValidRect(const cv::Size& extent, const cv::Size& scene_size_px) {
 
 // The grid pass proper on `wanted` (spans of a summarized template level, clipped to its cells,
 // sorted, not overlapping): the sums of their cells, span after span, into `sums`.
+// Where each usable feature's responses for the grid's first cell lie, in feature order: from
+// the summary's grid features when it has them, else worked out from the features.
+void MemorySources(const TemplateLevel& level, const SceneLevel& scene,
+                   const TemplateLevelSummary& summary, int grid_width,
+                   std::vector<const std::uint8_t*>& sources) {
+  sources.clear();
+  const auto rows =
+      static_cast<std::size_t>(MemoryRowKey(kModalityCount, 0, 0, 0, scene.spread_px));
+  if (!summary.grid_features.empty() && summary.grid_features.size() == level.features.size() &&
+      scene.memory_rows.size() == rows) {
+    sources.resize(static_cast<std::size_t>(summary.usable_features));
+    std::size_t next = 0;
+    for (const GridFeature& feature : summary.grid_features) {
+      const std::uint8_t* row = scene.memory_rows[feature.memory_row];
+      if (row == nullptr) continue;  // a modality the scene lacks
+      sources[next++] =
+          row + static_cast<std::ptrdiff_t>(feature.cell_y) * grid_width + feature.cell_x;
+    }
+    if (next != sources.size()) {
+      throw Error("grid features: the summary was made for another scene level");
+    }
+    return;
+  }
+  const SpreadDivider divider(scene.spread_px);
+  ForEachUsableFeature(level, scene, [&](const Feature& f) {
+    const LinearMemory& memory = scene.memories[ModalityIndex(f.modality)].orientations[f.label];
+    const int qx = divider.Quotient(f.x);
+    const int qy = divider.Quotient(f.y);
+    sources.push_back(memory.Memory(f.y - qy * scene.spread_px, f.x - qx * scene.spread_px) +
+                      static_cast<std::ptrdiff_t>(qy) * grid_width + qx);
+  });
+}
+
 void ScoreCells(const TemplateLevel& level, const SceneLevel& scene,
                 const TemplateLevelSummary& summary, std::span<const GridRowSpan> wanted,
                 const SimilarityOptions& options, std::vector<std::uint16_t>& sums) {
@@ -223,16 +257,8 @@ void ScoreCells(const TemplateLevel& level, const SceneLevel& scene,
   // Reused per thread: one template after another, allocating nothing.
   thread_local std::vector<Run> runs;
   GridRuns(wanted, grid_width, runs);
-  const SpreadDivider divider(scene.spread_px);
   thread_local std::vector<const std::uint8_t*> sources;
-  sources.clear();
-  ForEachUsableFeature(level, scene, [&](const Feature& f) {
-    const LinearMemory& memory = scene.memories[ModalityIndex(f.modality)].orientations[f.label];
-    const int qx = divider.Quotient(f.x);
-    const int qy = divider.Quotient(f.y);
-    sources.push_back(memory.Memory(f.y - qy * scene.spread_px, f.x - qx * scene.spread_px) +
-                      static_cast<std::ptrdiff_t>(qy) * grid_width + qx);
-  });
+  MemorySources(level, scene, summary, grid_width, sources);
   const int buffer_size = runs.back().buffer_offset + RoundUpToSimdBlock(runs.back().length);
   thread_local std::vector<std::uint16_t> packed;
   AccumulateRuns(sources, runs, buffer_size, options, packed);
@@ -278,7 +304,24 @@ void CheckTemplateLevel(const TemplateLevel& level) {
   }
 }
 
-TemplateLevelFacts LevelFacts(const TemplateLevel& level) {
+// `level`'s features as GridFeatures for spread `spread_px`; empty when one lies more than 255
+// cells out.
+std::vector<GridFeature> GridFeaturesOf(const TemplateLevel& level, int spread_px) {
+  std::vector<GridFeature> grid;
+  grid.reserve(level.features.size());
+  for (const Feature& feature : level.features) {
+    const int cell_x = feature.x / spread_px;
+    const int cell_y = feature.y / spread_px;
+    if (cell_x > 255 || cell_y > 255) return {};
+    grid.push_back({static_cast<std::uint16_t>(MemoryRowKey(
+                        ModalityIndex(feature.modality), feature.label,
+                        feature.x - cell_x * spread_px, feature.y - cell_y * spread_px, spread_px)),
+                    static_cast<std::uint8_t>(cell_x), static_cast<std::uint8_t>(cell_y)});
+  }
+  return grid;
+}
+
+TemplateLevelFacts LevelFacts(const TemplateLevel& level, int grid_spread_px) {
   if (level.features.size() > static_cast<std::size_t>(kMaxTemplateFeatures)) {
     CheckTemplateLevel(level);  // throws with the message
   }
@@ -294,6 +337,14 @@ TemplateLevelFacts LevelFacts(const TemplateLevel& level) {
     facts.extent.height = std::max(facts.extent.height, feature.y + 1);
     ++facts.features_by_modality[static_cast<std::size_t>(modality)];
   }
+  if (grid_spread_px != 0) {
+    if (grid_spread_px < 1 || grid_spread_px > kMaxSpreadPx) {
+      throw Error("grid features: spread T = " + std::to_string(grid_spread_px) +
+                  " is outside 1.." + std::to_string(kMaxSpreadPx));
+    }
+    facts.grid_features = GridFeaturesOf(level, grid_spread_px);
+    if (!facts.grid_features.empty()) facts.grid_spread_px = grid_spread_px;
+  }
   return facts;
 }
 
@@ -302,6 +353,9 @@ TemplateLevelSummary SummarizeFacts(const TemplateLevelFacts& facts, const Scene
   summary.extent = facts.extent;
   for (std::size_t m = 0; m < facts.features_by_modality.size(); ++m) {
     if (scene.present[m]) summary.usable_features += facts.features_by_modality[m];
+  }
+  if (facts.grid_spread_px == scene.spread_px && !scene.memory_rows.empty()) {
+    summary.grid_features = facts.grid_features;
   }
   return summary;
 }

@@ -40,11 +40,23 @@ struct SimilarityOptions {
 // level has at most kMaxTemplateFeatures features.
 void CheckTemplateLevel(const TemplateLevel& level);
 
+// A feature as grid scoring reads it on scene levels of one spread T: its linear memory
+// (SceneLevel::memory_rows at `memory_row`, MemoryRowKey of its modality, label and position
+// modulo T) and its cell offset (x / T, y / T).
+struct GridFeature {
+  std::uint16_t memory_row = 0;
+  std::uint8_t cell_x = 0;
+  std::uint8_t cell_y = 0;
+};
+
 // What scoring a template level against a scene level needs to know, from one pass over its
 // features (which also checks them, as CheckTemplateLevel).
 struct TemplateLevelSummary {
   int usable_features = 0;  // UsableFeatureCount
   cv::Size extent;          // TemplateExtent
+  // The level's features in order, as GridFeatures for this scene's spread, or empty: grid
+  // scoring then works them out from the features (the same sums either way).
+  std::span<const GridFeature> grid_features;
 };
 TemplateLevelSummary SummarizeTemplateLevel(const TemplateLevel& level, const SceneLevel& scene);
 
@@ -54,9 +66,16 @@ TemplateLevelSummary SummarizeTemplateLevel(const TemplateLevel& level, const Sc
 struct TemplateLevelFacts {
   cv::Size extent;                                         // TemplateExtent
   std::array<int, kModalityCount> features_by_modality{};  // index ModalityIndex
+  // With grid_spread_px > 0: every feature as a GridFeature for scene levels of that spread (the
+  // level a detector scores on the grid), so that scoring reads no feature coordinates.
+  int grid_spread_px = 0;
+  std::vector<GridFeature> grid_features;
 };
-TemplateLevelFacts LevelFacts(const TemplateLevel& level);
-// The summary against `scene`, from the facts: equal to SummarizeTemplateLevel's.
+// `grid_spread_px` > 0 adds the grid features for that spread (1..kMaxSpreadPx), unless a
+// feature lies too far out for GridFeature's cell offsets (more than 255 cells): then none.
+TemplateLevelFacts LevelFacts(const TemplateLevel& level, int grid_spread_px = 0);
+// The summary against `scene`, from the facts: equal to SummarizeTemplateLevel's, with the grid
+// features when they are for the scene's spread.
 TemplateLevelSummary SummarizeFacts(const TemplateLevelFacts& facts, const SceneLevel& scene);
 
 // The template's extent from its top-left: its box, grown to hold every feature.

@@ -343,7 +343,7 @@ void Detector::IndexObjects() {
       objects_.push_back(
           {a, object.obj_id, EdgeRanges(archive, object), LargestTemplate(archive, object),
            SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm),
-           TemplateFactsOf(archive.TemplatesOf(object.obj_id))});
+           TemplateFactsOf(archive.TemplatesOf(object.obj_id), reference.spread_px)});
     }
   }
 }

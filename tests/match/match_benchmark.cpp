@@ -130,6 +130,27 @@ void BenchMatchScatteredPoints(benchmark::State& state) {
 }
 BENCHMARK(BenchMatchScatteredPoints)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The block points' search with the templates' facts worked out beforehand, as a detector does:
+// without (0) and with (1) the top level's grid features. One thread.
+void BenchMatchBlockPointsFacts(benchmark::State& state) {
+  const BenchData& data = Data();
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  const PreparedScene scene(data.scene.quantized, data.scene.spread_px);
+  const std::vector<TemplateFacts> facts = TemplateFactsOf(
+      data.templates,
+      state.range(0) == 1 ? std::span<const int>(data.scene.spread_px) : std::span<const int>());
+  const TemplateSearch search{data.templates, &data.block_points, {}, nullptr, facts};
+  std::size_t found = 0;
+  for (auto _ : state) {
+    const auto matches =
+        MatchTemplateGroups(scene, std::span<const TemplateSearch>(&search, 1), {}, 16);
+    found = matches.size();
+    benchmark::DoNotOptimize(matches.data());
+  }
+  state.counters["matches"] = static_cast<double>(found);
+}
+BENCHMARK(BenchMatchBlockPointsFacts)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The candidate area of one depth layer's kept points as Scene-Patch coarse positioning yields
 // them: every 8 px over two 200 x 150 px blocks (about 950 points), within 8 px, for the cell
 // spans of both pyramid levels; then every phase's near cells of 2,000 anchors.

@@ -265,23 +265,31 @@ TEST(MatcherTest, TemplateFactsGiveTheSameMatches) {
     records.push_back(test::TemplateFromScene(scene, box, 63, id, rng));
   }
   std::vector<TemplateFacts> facts;
-  for (const TemplateRecord& record : records) facts.push_back(TemplateFactsOf(record));
+  std::vector<TemplateFacts> grid_facts;  // with the top level's grid features
+  for (const TemplateRecord& record : records) {
+    facts.push_back(TemplateFactsOf(record));
+    grid_facts.push_back(TemplateFactsOf(record, scene.spread_px));
+    ASSERT_FALSE(grid_facts.back().back().grid_features.empty());
+    ASSERT_TRUE(grid_facts.back().front().grid_features.empty());  // level 0: not on the grid
+  }
   for (const bool colour_only : {false, true}) {
     if (colour_only) {
       for (auto& level : scene.quantized) level[ModalityIndex(Modality::kDepthNormal)] = cv::Mat();
     }
     const PreparedScene prepared = Prepare(scene);
     const std::vector<RawMatch> without = Match(prepared, records);
-    TemplateSearch search{records, nullptr, {}};
-    search.facts = facts;
-    const std::vector<RawMatch> with =
-        MatchTemplateGroups(prepared, std::span<const TemplateSearch>(&search, 1), {});
-    ASSERT_EQ(with.size(), without.size()) << colour_only;
-    ASSERT_FALSE(with.empty());
-    for (std::size_t i = 0; i < with.size(); ++i) {
-      EXPECT_EQ(with[i].template_id, without[i].template_id);
-      EXPECT_EQ(cv::Point(with[i].x, with[i].y), cv::Point(without[i].x, without[i].y));
-      EXPECT_EQ(with[i].similarity_percent, without[i].similarity_percent);
+    for (const std::vector<TemplateFacts>* given : {&facts, &grid_facts}) {
+      TemplateSearch search{records, nullptr, {}};
+      search.facts = *given;
+      const std::vector<RawMatch> with =
+          MatchTemplateGroups(prepared, std::span<const TemplateSearch>(&search, 1), {});
+      ASSERT_EQ(with.size(), without.size()) << colour_only;
+      ASSERT_FALSE(with.empty());
+      for (std::size_t i = 0; i < with.size(); ++i) {
+        EXPECT_EQ(with[i].template_id, without[i].template_id);
+        EXPECT_EQ(cv::Point(with[i].x, with[i].y), cv::Point(without[i].x, without[i].y));
+        EXPECT_EQ(with[i].similarity_percent, without[i].similarity_percent);
+      }
     }
   }
   // Facts for another number of templates are refused.

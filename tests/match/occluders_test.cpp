@@ -114,6 +114,34 @@ TEST_F(OccludersTest, EmptyOccluderMasksChangeNothing) {
   EXPECT_EQ(Match(&masks, options), plain);
 }
 
+// The scene templates are ranked on has linear memories of its own (floored at occluders):
+// grid features read those, as the features do.
+TEST_F(OccludersTest, GridFeaturesReadTheRankedScene) {
+  const cv::Rect cover(box_.x - 16, box_.y - 16, 40, box_.height + 32);
+  CoverWithAnotherSurface(scene_, cover);
+  const PreparedScene prepared(scene_.quantized, scene_.spread_px);
+  const Occluders occluders = MakeOccluders(prepared, Masks(scene_, cover));
+  const int top = static_cast<int>(record_.levels.size()) - 1;
+  const TemplateLevel& level = record_.levels[static_cast<std::size_t>(top)];
+  const SceneLevel& ranked = occluders.ranked.LinearizedLevel(top);
+  const SceneLevel& plain = prepared.LinearizedLevel(top);
+  const cv::Size cells = GridPositionCount(level, ranked);
+  std::vector<GridRowSpan> spans;
+  for (int row = 0; row < cells.height; ++row) spans.push_back({row, 0, cells.width - 1});
+  const auto sums = [&](const SceneLevel& scene, const TemplateLevelSummary& summary) {
+    std::vector<std::uint16_t> result;
+    ComputeSpanSimilarity(level, scene, summary, spans, result);
+    return result;
+  };
+  const TemplateLevelFacts facts = LevelFacts(level, ranked.spread_px);
+  const std::vector<std::uint16_t> ranked_sums =
+      sums(ranked, SummarizeTemplateLevel(level, ranked));
+  EXPECT_EQ(sums(ranked, SummarizeFacts(facts, ranked)), ranked_sums);
+  EXPECT_EQ(sums(plain, SummarizeFacts(facts, plain)),
+            sums(plain, SummarizeTemplateLevel(level, plain)));
+  EXPECT_NE(ranked_sums, sums(plain, SummarizeTemplateLevel(level, plain)));  // the floors count
+}
+
 TEST_F(OccludersTest, MasksOfTheWrongCountSizeOrTypeAreRejected) {
   std::vector<cv::Mat> masks = Masks(scene_, box_);
   masks.pop_back();

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "match/spread.h"
 #include "match_test_util.h"
 #include "util/error.h"
 
@@ -170,6 +171,43 @@ TEST(SimilarityTest, SpanSimilarityListsTheSpansCellsInOrder) {
       EXPECT_THROW(ComputeSpanSimilarity(level, scene.level, summary, bad, sums), Error);
     }
   }
+}
+
+// Grid features worked out once (LevelFacts with the scene's spread) give the sums the features
+// give, for every spread, with both modalities and with colour only; facts for another spread,
+// or with a feature too far out for a cell offset, carry none and give the same sums.
+TEST(SimilarityTest, GridFeaturesGiveTheSumsTheFeaturesGive) {
+  cv::RNG rng(54);
+  for (int t = 1; t <= kMaxSpreadPx; t += 3) {
+    for (const bool with_depth : {true, false}) {
+      const Scene scene = MakeScene({203, 157}, t, 0.15, rng, with_depth);
+      const TemplateLevel level = RandomTemplate(90, {40, 30}, rng);
+      const cv::Size cells = GridPositionCount(level, scene.level);
+      const std::vector<GridRowSpan> spans = {{0, 0, cells.width - 1},
+                                              {cells.height - 1, 0, cells.width - 1}};
+      const TemplateLevelFacts facts = LevelFacts(level, t);
+      ASSERT_EQ(facts.grid_features.size(), level.features.size());
+      const TemplateLevelSummary summary = SummarizeFacts(facts, scene.level);
+      ASSERT_EQ(summary.grid_features.size(), level.features.size());
+      std::vector<std::uint16_t> from_grid;
+      ComputeSpanSimilarity(level, scene.level, summary, spans, from_grid);
+      std::vector<std::uint16_t> from_features;
+      ComputeSpanSimilarity(level, scene.level, SummarizeTemplateLevel(level, scene.level), spans,
+                            from_features);
+      EXPECT_EQ(from_grid, from_features) << "T " << t << (with_depth ? "" : ", colour only");
+      std::size_t next = 0;
+      for (int gx = 0; gx < cells.width; ++gx) {
+        ASSERT_EQ(from_grid[next++], test::NaiveScore(level, scene.naive, {gx * t, 0}));
+      }
+      const TemplateLevelFacts other_spread = LevelFacts(level, t % kMaxSpreadPx + 1);
+      EXPECT_TRUE(SummarizeFacts(other_spread, scene.level).grid_features.empty());
+    }
+  }
+  TemplateLevel far = RandomTemplate(10, {20, 20}, rng);
+  far.features[3].x = 256;  // cell 256 at T = 1
+  EXPECT_TRUE(LevelFacts(far, 1).grid_features.empty());
+  EXPECT_EQ(LevelFacts(far, 2).grid_features.size(), far.features.size());
+  EXPECT_THROW(LevelFacts(far, kMaxSpreadPx + 1), Error);
 }
 
 TEST(SimilarityTest, LocalWindowAgreesWithNaiveReferenceAndIsClipped) {
