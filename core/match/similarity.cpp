@@ -205,8 +205,6 @@ cv::Rect ValidRect(const cv::Size& extent, const cv::Size& scene_size_px) {
   return {0, 0, columns, rows};
 }
 
-// The grid pass proper on `wanted` (spans of a summarized template level, clipped to its cells,
-// sorted, not overlapping): the sums of their cells, span after span, into `sums`.
 // Where each usable feature's responses for the grid's first cell lie, in feature order: from
 // the summary's grid features when it has them, else worked out from the features.
 void MemorySources(const TemplateLevel& level, const SceneLevel& scene,
@@ -240,6 +238,8 @@ void MemorySources(const TemplateLevel& level, const SceneLevel& scene,
   });
 }
 
+// The grid pass proper on `wanted` (spans of a summarized template level, clipped to its cells,
+// sorted, not overlapping): the sums of their cells, span after span, into `sums`.
 void ScoreCells(const TemplateLevel& level, const SceneLevel& scene,
                 const TemplateLevelSummary& summary, std::span<const GridRowSpan> wanted,
                 const SimilarityOptions& options, std::vector<std::uint16_t>& sums) {
