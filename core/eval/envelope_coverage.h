@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Whether an archive's view envelope covers a pose: a miss that no template could match is a
-// training question (widen the envelope, set the up axis), not a detection failure.
+// Whether an archive's view envelope covers a pose: a miss that no template matches closely is a
+// training question (widen the envelope, set the up axis), not a detection failure. A part off
+// the image centre seen from above looks rolled by more than the camera is (docs/NOTES.md,
+// "Full-roll tabletop archives"), so tabletop scenes hold such targets too.
 #pragma once
 
 #include <map>

@@ -181,9 +181,14 @@ std::string EnvelopeCoverageText(const MethodSummary& summary, const MethodRun& 
     const auto first = std::find_if(run.outcomes.begin(), run.outcomes.end(), [&](const auto& o) {
       return o.obj_id == object.obj_id && o.outside_envelope;
     });
+    // More than a sampling step from every template: none matches them closely, though ICP can
+    // still turn a near template's pose onto some of them.
+    const int found = object.outside_envelope - object.missed_outside_envelope;
     text += "obj " + std::to_string(object.obj_id) + ": " +
             std::to_string(object.outside_envelope) + " of " + std::to_string(object.frames) +
-            " targets outside the archive's envelope, no template could match them (first: scene " +
+            " targets outside the archive's envelope, farther than a sampling step from every "
+            "template, " +
+            std::to_string(found) + " of them found all the same (first: scene " +
             std::to_string(first->scene_id) + " image " + std::to_string(first->image_id) + ", " +
             first->envelope_note + ")\n";
   }

@@ -48,7 +48,8 @@ struct TargetOutcome {
   PoseScore pose;               // against the closest annotated instance; meaningful when detected
   double frame_time_ms = 0.0;
   // No annotated instance of the target lies inside the archive's view envelope
-  // (eval/envelope_coverage.h): no template could match it.
+  // (eval/envelope_coverage.h): every template is more than a sampling step from it, so none
+  // matches it closely (ICP may still turn a near template's pose onto it).
   bool outside_envelope = false;
   std::string envelope_note;  // why, for the first instance
 };

@@ -95,6 +95,22 @@ TEST(EvalReportTest, MissesAreNamedByCause) {
   EXPECT_EQ(MissesText(Summary(all_right)), "");
 }
 
+// Targets outside the envelope are named with the first one's reason, and those found all the
+// same (ICP can turn a near template's pose onto them) are counted apart.
+TEST(EvalReportTest, TargetsOutsideTheEnvelopeAreCountedWithThoseFound) {
+  MethodRun run = SampleRun();  // image 4 right, image 5 not detected
+  for (TargetOutcome& outcome : run.outcomes) {
+    outcome.outside_envelope = true;
+    outcome.envelope_note = "roll -99 deg outside the trained -45..45 deg";
+  }
+  const MethodSummary summary = Summary(run);
+  EXPECT_EQ(EnvelopeCoverageText(summary, run),
+            "obj 3: 2 of 2 targets outside the archive's envelope, farther than a sampling step "
+            "from every template, 1 of them found all the same (first: scene 1 image 4, roll -99 "
+            "deg outside the trained -45..45 deg)\n");
+  EXPECT_EQ(EnvelopeCoverageText(Summary(SampleRun()), SampleRun()), "");
+}
+
 TEST(EvalReportTest, WritesBothFilesIntoANewFolder) {
   test::TempDir dir;
   const MethodRun run = SampleRun();
