@@ -190,8 +190,8 @@ QWidget* DetectionPanel::BuildDetectBox() {
   coverage_label_->setWordWrap(true);
   coverage_label_->setToolTip(
       tr("Whether the template set's views, rolls and depth layers reach each ground-truth pose "
-         "of the frame: a pose outside can only be missed (widen the envelope or set the up "
-         "axis). Its camera is drawn in the 3D view."));
+         "of the frame: no template matches a pose outside closely, so it is likely missed "
+         "(widen the envelope or set the up axis). Its camera is drawn in the 3D view."));
   coverage_label_->hide();
   auto* layout = new QVBoxLayout(box);
   layout->addWidget(archive_label_);
