@@ -72,8 +72,7 @@ void LinearizeSceneLevel(SceneLevel& level) {
 
 void IndexMemoryRows(SceneLevel& level) {
   const int spread = level.spread_px;
-  level.memory_rows.assign(static_cast<std::size_t>(MemoryRowKey(kModalityCount, 0, 0, 0, spread)),
-                           nullptr);
+  level.memory_rows.assign(static_cast<std::size_t>(MemoryRowCount(spread)), nullptr);
   for (int m = 0; m < kModalityCount; ++m) {
     if (!level.present[m]) continue;
     for (int label = 0; label < kOrientationCount; ++label) {

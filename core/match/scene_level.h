@@ -55,6 +55,11 @@ void LinearizeSceneLevel(SceneLevel& level);
 constexpr int MemoryRowKey(int modality, int label, int phase_x, int phase_y, int spread_px) {
   return ((modality * kOrientationCount + label) * spread_px + phase_y) * spread_px + phase_x;
 }
+// The size of SceneLevel::memory_rows for spread `spread_px`: one row per modality, label and
+// position within a cell.
+constexpr int MemoryRowCount(int spread_px) {
+  return MemoryRowKey(kModalityCount, 0, 0, 0, spread_px);
+}
 // Fills SceneLevel::memory_rows from its linear memories; whatever replaces them calls it again.
 void IndexMemoryRows(SceneLevel& level);
 

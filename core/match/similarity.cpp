@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -211,8 +212,7 @@ void MemorySources(const TemplateLevel& level, const SceneLevel& scene,
                    const TemplateLevelSummary& summary, int grid_width,
                    std::vector<const std::uint8_t*>& sources) {
   sources.clear();
-  const auto rows =
-      static_cast<std::size_t>(MemoryRowKey(kModalityCount, 0, 0, 0, scene.spread_px));
+  const auto rows = static_cast<std::size_t>(MemoryRowCount(scene.spread_px));
   if (!summary.grid_features.empty() && summary.grid_features.size() == level.features.size() &&
       scene.memory_rows.size() == rows) {
     sources.resize(static_cast<std::size_t>(summary.usable_features));
@@ -312,7 +312,8 @@ std::vector<GridFeature> GridFeaturesOf(const TemplateLevel& level, int spread_p
   for (const Feature& feature : level.features) {
     const int cell_x = feature.x / spread_px;
     const int cell_y = feature.y / spread_px;
-    if (cell_x > 255 || cell_y > 255) return {};
+    constexpr int kLastCell = std::numeric_limits<std::uint8_t>::max();  // GridFeature's cells
+    if (cell_x > kLastCell || cell_y > kLastCell) return {};
     grid.push_back({static_cast<std::uint16_t>(MemoryRowKey(
                         ModalityIndex(feature.modality), feature.label,
                         feature.x - cell_x * spread_px, feature.y - cell_y * spread_px, spread_px)),
