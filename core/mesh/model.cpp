@@ -70,25 +70,22 @@ std::string HashFile(const fs::path& path) {
 }
 
 // OpenMesh reports non-manifold faces on its error stream; the core must not print, and the
-// faces are kept anyway (see AddFaces).
-class QuietOpenMesh {
- public:
-  QuietOpenMesh() : was_enabled_(omerr().is_enabled()) { omerr().disable(); }
-  ~QuietOpenMesh() {
-    if (was_enabled_) omerr().enable();
-  }
-  QuietOpenMesh(const QuietOpenMesh&) = delete;
-  QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
-
- private:
-  bool was_enabled_;
-};
+// faces are kept anyway (see AddFaces). The stream is one for the process and models load on
+// several threads at once (synth), so it is silenced once and stays so: a switch turned back on
+// after each load let one thread's report through while another was still loading.
+void SilenceOpenMesh() {
+  static const bool silenced = [] {
+    omerr().disable();
+    return true;
+  }();
+  (void)silenced;
+}
 
 // Non-manifold or inconsistently oriented triangles cannot join the half-edge structure; they
 // get their own copies of their vertices, so that renders still show them.
 void AddFaces(const TriangleSoup& soup, const std::vector<TriMesh::VertexHandle>& handles,
               TriMesh& mesh) {
-  const QuietOpenMesh quiet;
+  SilenceOpenMesh();
   std::size_t split = 0;
   for (const auto& tri : soup.triangles) {
     if (mesh.add_face(handles[tri[0]], handles[tri[1]], handles[tri[2]]).is_valid()) continue;

@@ -5,11 +5,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
+#include <thread>
+#include <vector>
 
 #include "mesh_files.h"
 #include "support/matchers.h"
@@ -196,6 +200,35 @@ TEST_F(ModelTest, KeepsNonManifoldAndFlippedTriangles) {
   EXPECT_EQ(model.mesh.n_faces(), 4u);
   EXPECT_GE(model.mesh.n_vertices(), 6u);
   for (const auto vh : model.mesh.vertices()) EXPECT_FALSE(model.mesh.is_isolated(vh));
+}
+
+TEST_F(ModelTest, NonManifoldMeshesLoadSilentlyOnSeveralThreads) {
+  // OpenMesh reports each face it cannot join on one error stream for the process; models load
+  // on several threads at once (synth), and none of them may print. A fan of triangles on one
+  // edge: every one past the second is such a face.
+  constexpr int kBlades = 400;
+  std::string vertices = "0 0 0\n10 0 0\n";
+  std::string faces;
+  for (int k = 0; k < kBlades; ++k) {
+    const double angle = 2.0 * std::numbers::pi * k / kBlades;
+    vertices += "5 " + std::to_string(5.0 * std::cos(angle)) + " " +
+                std::to_string(5.0 * std::sin(angle)) + "\n";
+    faces += "3 0 1 " + std::to_string(k + 2) + "\n";
+  }
+  const auto path = Write("fan.ply", test::PlainPly(vertices, kBlades + 2, faces, kBlades));
+  std::atomic<int> loaded{0};
+  ::testing::internal::CaptureStderr();
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&] {
+      for (int i = 0; i < 10; ++i) {
+        if (LoadModel(path).mesh.n_faces() == std::size_t{kBlades}) ++loaded;
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(loaded.load(), 40);
 }
 
 TEST_F(ModelTest, AcceptsAFlatPlate) {
