@@ -38,7 +38,8 @@ struct Candidate {
 struct CoarseHit {
   int sum = 0;
   cv::Point cell;
-  float percent = 0.0f;  // SimilarityPercent of sum
+  float percent = 0.0f;       // SimilarityPercent of sum
+  float rise_percent = 0.0f;  // RisePercent: what hits are ranked by across templates
 };
 
 struct Refined {
@@ -233,14 +234,27 @@ struct TemplateHits {
   std::vector<CoarseHit> hits;  // best first
 };
 
-// A coarse hit ranked across templates: by its top-level similarity percentage (templates have
-// different feature counts, so their sums do not compare).
+// A coarse hit ranked across templates: by its RisePercent (templates have different feature
+// counts, so their sums do not compare).
 struct RankedHit {
-  float percent = 0.0f;
+  float rise_percent = 0.0f;
   std::uint32_t template_id = 0;
   std::size_t source = 0;  // index into the TemplateHits list
   std::size_t hit = 0;     // index into its hits
 };
+
+// How far a top-level hit rises above the template's other scored cells: 100 (s - m) / (S - m),
+// s the hit's sum, m the mean sum of the other cells (0 when there are none) and S the highest
+// sum the template can reach. Hits are ranked across templates by it, not by their similarity:
+// a template with few top-level features (a part small in the image spans two or three cells)
+// reaches 80 % almost anywhere, and by similarity alone its hits crowded out those that stand out
+// from their surroundings. `total`: the sum over all `cells` scored, the hit's included.
+float RisePercent(int sum, std::int64_t total, std::size_t cells, int feature_count) {
+  const double others =
+      cells > 1 ? static_cast<double>(total - sum) / static_cast<double>(cells - 1) : 0.0;
+  const double headroom = static_cast<double>(kMaxFeatureScore * feature_count) - others;
+  return static_cast<float>(100.0 * (sum - others) / std::max(headroom, 1.0));
+}
 
 TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& facts,
                            const PreparedScene& scene, const MatchOptions& options,
@@ -272,8 +286,10 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& fa
   result.half_box = geometry.half_box;
   result.hits = CoarseHits(scored, sums, top_summary.usable_features, options.threshold_percent,
                            options.max_candidates_per_template);
+  const std::int64_t total = std::accumulate(sums.begin(), sums.end(), std::int64_t{0});
   for (CoarseHit& hit : result.hits) {
     hit.percent = SimilarityPercent(hit.sum, top_summary.usable_features);
+    hit.rise_percent = RisePercent(hit.sum, total, sums.size(), top_summary.usable_features);
   }
   return result;
 }
@@ -284,14 +300,14 @@ std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template, s
   for (std::size_t t = 0; t < per_template.size(); ++t) {
     const TemplateHits& source = per_template[t];
     for (std::size_t h = 0; h < source.hits.size(); ++h) {
-      ranked.push_back({source.hits[h].percent, source.record->id, t, h});
+      ranked.push_back({source.hits[h].rise_percent, source.record->id, t, h});
     }
   }
   const auto better = [&](const RankedHit& a, const RankedHit& b) {
     const cv::Point& cell_a = per_template[a.source].hits[a.hit].cell;
     const cv::Point& cell_b = per_template[b.source].hits[b.hit].cell;
-    return std::make_tuple(-a.percent, a.template_id, cell_a.y, cell_a.x) <
-           std::make_tuple(-b.percent, b.template_id, cell_b.y, cell_b.x);
+    return std::make_tuple(-a.rise_percent, a.template_id, cell_a.y, cell_a.x) <
+           std::make_tuple(-b.rise_percent, b.template_id, cell_b.y, cell_b.x);
   };
   if (ranked.size() > budget) {
     std::nth_element(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(budget),

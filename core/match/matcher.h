@@ -114,7 +114,8 @@ class PreparedScene {
 // passes. First, per template over the levels both it and the scene have, every valid grid
 // position of the top level is scored (all modalities' features together) and the positions at
 // or above the threshold are kept (at most max_candidates_per_template). Second, the best of
-// those hits over all templates (by top-level similarity, at most max_refinements) are refined
+// those hits over all templates (at most max_refinements, ranked by how far each rises above its
+// template's other scored positions: RisePercent in matcher.cpp) are refined
 // pixel by pixel at the top level within their grid cell, then at each lower level within +-T
 // of the upscaled position (the best spread score wins; ties go to the best pixel-exact
 // alignment, see ExactAlignmentScore); matches at or above the threshold at level 0 survive,

@@ -363,6 +363,53 @@ TEST(MatcherTest, TheRefinementBudgetKeepsTheBestTopLevelHits) {
   EXPECT_THROW(Match(prepared, records, options), Error);
 }
 
+TEST(MatcherTest, TheRefinementBudgetGoesToHitsThatStandOutFromTheirTemplatesOtherCells) {
+  cv::RNG rng(72);
+  test::TestScene scene = test::RandomScene({320, 240}, kDensity, rng);
+  // The right three quarters of the scene: orientation 0 everywhere, at both levels.
+  const cv::Rect uniform(80, 0, 240, 240);
+  for (std::size_t level = 0; level < scene.quantized.size(); ++level) {
+    const int shift = static_cast<int>(level);
+    const cv::Rect scaled(uniform.x >> shift, uniform.y >> shift, uniform.width >> shift,
+                          uniform.height >> shift);
+    for (cv::Mat& modality : scene.quantized[level]) modality(scaled).setTo(1);
+  }
+  const PreparedScene prepared = Prepare(scene);
+  // Template 0, cut from the uniform part, an eighth of its features one bin off: 91 % on all of
+  // that part. Template 1, cut from the random part, a third of its features turned by 90 deg:
+  // less at its own place only.
+  TemplateRecord everywhere = test::TemplateFromScene(scene, {200, 100, 40, 40}, 63, 0, rng);
+  TemplateRecord once = test::TemplateFromScene(scene, {20, 100, 40, 40}, 63, 1, rng);
+  for (std::size_t l = 0; l < everywhere.levels.size(); ++l) {
+    for (std::size_t i = 0; i < everywhere.levels[l].features.size(); i += 8) {
+      everywhere.levels[l].features[i].label = 1;
+    }
+    for (std::size_t i = 0; i < once.levels[l].features.size(); i += 3) {
+      Feature& feature = once.levels[l].features[i];
+      feature.label = static_cast<std::uint8_t>((feature.label + 4) % 8);
+    }
+  }
+  MatchOptions options;
+  options.threshold_percent = 60.0f;
+  const std::vector<RawMatch> all = Match(prepared, {everywhere, once}, options);
+  const auto best_of = [&](std::uint32_t id) {
+    float best = 0.0f;
+    for (const RawMatch& match : all) {
+      if (match.template_id == id) best = std::max(best, match.similarity_percent);
+    }
+    return best;
+  };
+  ASSERT_GT(best_of(0), best_of(1)) << "the uniform template must score higher";
+  // One refinement: the hit that rises above its template's other cells, not the higher one.
+  options.max_refinements = 1;
+  const std::vector<RawMatch> budgeted = Match(prepared, {everywhere, once}, options);
+  ASSERT_EQ(budgeted.size(), 1u);
+  EXPECT_EQ(budgeted[0].template_id, 1u);
+  // Its own place, give or take the turned features' pull.
+  EXPECT_NEAR(budgeted[0].x, 20, 4);
+  EXPECT_NEAR(budgeted[0].y, 100, 4);
+}
+
 TEST(MatcherTest, CandidatePointsOutsideTheImageReachOnlyNearbyTemplates) {
   cv::RNG rng(68);
   test::TestScene scene = test::RandomScene({200, 150}, kDensity, rng);
