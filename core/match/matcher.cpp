@@ -294,7 +294,8 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& fa
   return result;
 }
 
-// The hits refined: the best top-level similarities over all templates, at most `budget`.
+// The hits refined: those that rise most above their template's other cells (RisePercent), over
+// all templates, at most `budget`.
 std::vector<RankedHit> RankHits(const std::vector<TemplateHits>& per_template, std::size_t budget) {
   std::vector<RankedHit> ranked;
   for (std::size_t t = 0; t < per_template.size(); ++t) {

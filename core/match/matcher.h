@@ -44,7 +44,8 @@ struct MatchOptions {
   // where thousands of coarse positions pass the threshold.
   int max_candidates_per_template = 64;
   // Top-level hits refined down the pyramid per call (over all template sets of
-  // MatchTemplateGroups together), best top-level similarity first over all templates: refining
+  // MatchTemplateGroups together), the hits that rise most above their template's other
+  // top-level positions first (RisePercent in matcher.cpp), over all templates: refining
   // costs far more than scoring, and near a part thousands of templates pass the top-level
   // threshold at several positions. Scene-Patch with 5 blocks found as many targets with 2000
   // shared as with 1000 per block (up to 5000), on four synthetic scene sets.
