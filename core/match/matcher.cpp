@@ -286,6 +286,7 @@ TemplateHits ScoreTopLevel(const TemplateRecord& record, const TemplateFacts& fa
   result.half_box = geometry.half_box;
   result.hits = CoarseHits(scored, sums, top_summary.usable_features, options.threshold_percent,
                            options.max_candidates_per_template);
+  if (result.hits.empty()) return result;  // most templates: no sum over the cells needed
   const std::int64_t total = std::accumulate(sums.begin(), sums.end(), std::int64_t{0});
   for (CoarseHit& hit : result.hits) {
     hit.percent = SimilarityPercent(hit.sum, top_summary.usable_features);
