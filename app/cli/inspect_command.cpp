@@ -38,6 +38,9 @@ void PrintText(const nlohmann::json& json) {
     std::printf("  views: up axis %s, elevation %s, roll %s, %s\n", up.c_str(),
                 views["elevation"].get<std::string>().c_str(),
                 views["roll"].get<std::string>().c_str(), sampling.c_str());
+    const bool ray_frame = object["normal_frame"] == "viewing_ray";
+    std::printf("  depth normals quantized in the %s frame\n",
+                ray_frame ? "viewing-ray" : "camera");
     std::printf("  %5s %9s %9s %5s %8s %18s %18s %18s\n", "layer", "depth_mm", "templates", "weak",
                 "clusters", "colour min/avg/max", "normal min/avg/max", "edges min/avg/max");
     for (const auto& layer : object["layers"]) {

@@ -64,6 +64,7 @@ nlohmann::json ObjectJson(const TemplateArchive& archive, const ArchiveObject& o
                           {"diameter_mm", object.diameter_mm}};
   entry["templates"] = archive.TemplatesOf(object.obj_id).size();
   entry["views"] = ToJson(object.profile)["views"];  // the envelope and the up axis
+  entry["normal_frame"] = NormalFrameName(object.profile.features.normal_frame);
   for (std::size_t layer = 0; layer < object.layer_depths_mm.size(); ++layer) {
     const LayerStats stats = ComputeLayerStats(
         archive.TemplatesOf(object.obj_id, static_cast<int>(layer)), object.layer_depths_mm[layer]);

@@ -105,13 +105,13 @@ std::vector<FeatureCandidate> DepthNormalCandidates(const cv::Mat& depth_mm,
                                                     const cv::Mat& interior,
                                                     const PinholeCamera& camera,
                                                     cv::Point offset_px, float max_depth_step_mm,
-                                                    int count) {
+                                                    NormalFrame frame, int count) {
   if (interior.type() != CV_8U || interior.size() != depth_mm.size()) {
     throw Error("DepthNormalCandidates: interior must be CV_8U of the depth map's size");
   }
   std::vector<FeatureCandidate> candidates;
   const cv::Mat normals =
-      ComputeDepthNormals(depth_mm, camera, offset_px, max_depth_step_mm, interior);
+      ComputeDepthNormals(depth_mm, camera, offset_px, max_depth_step_mm, frame, interior);
   const cv::Mat quantized = QuantizeNormals(normals);
   const cv::Mat stability = LabelBorderDistance(quantized, interior);
   for (int y = (offset_px.y & 1); y < quantized.rows; y += 2) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "features/feature_selection.h"
+#include "features/normal_frame.h"
 #include "geometry/camera.h"
 
 namespace layermod {
@@ -36,6 +37,6 @@ std::vector<FeatureCandidate> DepthNormalCandidates(const cv::Mat& depth_mm,
                                                     const cv::Mat& interior,
                                                     const PinholeCamera& camera,
                                                     cv::Point offset_px, float max_depth_step_mm,
-                                                    int count);
+                                                    NormalFrame frame, int count);
 
 }  // namespace layermod

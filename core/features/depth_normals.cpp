@@ -196,8 +196,20 @@ void CheckInputs(const cv::Mat& depth_mm, const PinholeCamera& camera, float max
 
 }  // namespace
 
+cv::Vec3f InViewingRayFrame(const cv::Vec3f& normal, float xn, float yn) {
+  // Rodrigues' formula with the unnormalized axis k = r x z = (ry, -rx, 0), |k| = sin, and
+  // cos_angle = rz: R n = n cos_angle + k x n + k (k . n) / (1 + cos_angle). R r = z.
+  const float inverse_length = 1.0f / std::sqrt(xn * xn + yn * yn + 1.0f);
+  const float rx = xn * inverse_length, ry = yn * inverse_length, cos_angle = inverse_length;
+  const float nx = normal[0], ny = normal[1], nz = normal[2];
+  const float along_k = (ry * nx - rx * ny) / (1.0f + cos_angle);
+  return {nx * cos_angle - rx * nz + ry * along_k, ny * cos_angle - ry * nz - rx * along_k,
+          nz * cos_angle + rx * nx + ry * ny};
+}
+
 cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera,
-                            cv::Point roi_offset, float max_depth_step_mm, const cv::Mat& where) {
+                            cv::Point roi_offset, float max_depth_step_mm, NormalFrame frame,
+                            const cv::Mat& where) {
   CheckInputs(depth_mm, camera, max_depth_step_mm);
   if (!where.empty() && (where.type() != CV_8U || where.size() != depth_mm.size())) {
     throw Error("ComputeDepthNormals: `where` must be CV_8U of the depth map's size");
@@ -220,6 +232,7 @@ cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera
                 out_z.data(), complete.data());
     auto* out = normals.ptr<cv::Vec3f>(v);
     const std::uint8_t* wanted = where.empty() ? nullptr : where.ptr<std::uint8_t>(v);
+    const float yn = (static_cast<float>(v) - k.cy) / k.fy;
     for (int u = 0; u < width; ++u) {
       if (wanted != nullptr && wanted[u] == 0) continue;
       if (complete[u] != 0) {
@@ -227,6 +240,7 @@ cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera
       } else if (z0[u] > 0.0f) {
         out[u] = GeneralFit(ring, k, u, v, max_depth_step_mm);
       }
+      if (frame == NormalFrame::kViewingRay) out[u] = InViewingRayFrame(out[u], xn[u], yn);
     }
     ring.Advance(v);
   }

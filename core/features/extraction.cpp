@@ -101,7 +101,7 @@ std::vector<FeatureCandidate> NormalCandidates(const LevelImages& level, int cou
       cv::Rect(box.x - 3, box.y - 3, box.width + 6, box.height + 6) & cv::Rect({}, interior.size());
   return DepthNormalCandidates(level.depth_mm(window), interior(window), level.camera,
                                level.offset_px + window.tl(), options.max_normal_depth_step_mm,
-                               count);
+                               options.normal_frame, count);
 }
 
 int LevelCount(int level0_count, int k) {

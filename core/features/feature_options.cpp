@@ -8,6 +8,16 @@
 
 namespace layermod {
 
+std::string_view NormalFrameName(NormalFrame frame) {
+  return frame == NormalFrame::kCamera ? "camera" : "viewing_ray";
+}
+
+std::optional<NormalFrame> NormalFrameFromName(std::string_view name) {
+  if (name == "camera") return NormalFrame::kCamera;
+  if (name == "viewing_ray") return NormalFrame::kViewingRay;
+  return std::nullopt;
+}
+
 void FeatureOptions::Validate() const {
   if (color_features < 0 || normal_features < 0 || color_features + normal_features == 0) {
     throw Error("features: need a positive number of colour and/or normal features");

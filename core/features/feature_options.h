@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include "features/normal_frame.h"
+
 namespace layermod {
 
 // Parameters of LineMOD feature extraction, stored in the archive so detection uses the same.
@@ -18,6 +20,8 @@ struct FeatureOptions {
   // Depth-edge threshold for coarse positioning: this fraction of the object's largest bounding
   // box side (paper: 30 % of eta), compared with the depth step in mm between neighbours.
   float depth_edge_fraction = 0.3f;
+  // The frame depth normals are quantized in, templates and scenes alike (features/normal_frame.h).
+  NormalFrame normal_frame = NormalFrame::kViewingRay;
 
   void Validate() const;  // throws Error naming the bad field
   bool operator==(const FeatureOptions&) const = default;

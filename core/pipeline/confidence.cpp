@@ -8,22 +8,22 @@ namespace layermod {
 namespace {
 
 // Logistic regression: confidence = 1 / (1 + exp(-(bias + sum w_i x_i))), features in the order
-// of ConfidenceFeatures::Names(). Fitted by tools/fit_confidence.py on the outcomes of three
-// scene sets (docs/RESULTS.md, "Confidence": the 8 LineMOD objects on harder and on tabletop
-// scenes, the bundled bracket): 1443 detections, 543 right, 900 wrong (776 of them of parts the
-// frame does not show).
+// of ConfidenceFeatures::Names(). Fitted by tools/fit_confidence.py on the outcomes of six scene
+// sets (docs/RESULTS.md, "Depth normals in each pixel's viewing-ray frame": the N and P sets,
+// the 8 LineMOD objects on harder and on tabletop scenes and the bundled bracket): 2308
+// detections, 938 right, 1370 wrong (1282 of them of parts the frame does not show).
 //
-//   tools/fit_confidence.py val_hard_eval/report.json val_table_eval/report.json
-//       bracket_val_eval/report.json   (one command line)
+//   tools/fit_confidence.py ev_hardN/report.json ev_hardP/report.json ev_tabN/report.json
+//       ev_tabP/report.json ev_brN/report.json ev_brP/report.json   (one command line)
 //   tools/fit_confidence.py --no-depth cal_table_rgb_eval/report.json
 struct LogisticModel {
   double bias;
   std::array<double, ConfidenceFeatures::kCount> weights;
 };
 
-constexpr LogisticModel kWithDepth{-29.8069,
-                                   {15.6179, 21.9881, 7.0888, -18.6324, -7.0424, -7.0063, -1.7135,
-                                    4.9680, -2.7761, -5.6988, 12.3146}};
+constexpr LogisticModel kWithDepth{-27.0317,
+                                   {17.6067, 17.6881, 6.8612, -31.0103, 1.5743, -10.7095, -1.0311,
+                                    9.3941, 6.8490, -11.2202, 10.4395}};
 // Without depth the distance is only the matched layer's: the confidence is that the detection is
 // right in the image (projected box IoU >= 0.5 with the truth), fitted on colour-only runs.
 constexpr LogisticModel kWithoutDepth{-12.1041, {9.4217, 0, 0, 0, 0, 0, 0, 2.4283, 0, 0, 0}};

@@ -335,6 +335,12 @@ void Detector::IndexObjects() {
       if (!seen.insert(object.obj_id).second) {
         throw Error("detector: object id " + std::to_string(object.obj_id) + " appears twice");
       }
+      if (object.profile.features.normal_frame != reference.normal_frame) {
+        throw Error(
+            "detector: archives quantize depth normals in different frames (format 2 and older "
+            "in the camera's, format 3 in each pixel's viewing ray's); retrain the older ones "
+            "with this version");
+      }
       if (!SameSceneFeatures(object.profile.features, reference)) {
         throw Error(
             "detector: archives use different feature parameters (pyramid, spread, "

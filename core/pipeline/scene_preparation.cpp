@@ -42,9 +42,10 @@ QuantizedLevels QuantizeAt(const cv::Mat& color_bgr, const cv::Mat& depth_mm,
       maps[ModalityIndex(Modality::kColorGradient)] =
           QuantizeColorGradients(colors[level], features.weak_gradient);
     } else if (!depths[level].empty()) {
-      const cv::Mat normals = ComputeDepthNormals(
-          depths[level], PyramidLevelCamera(camera, static_cast<int>(level)),
-          cv::Point(offset_px.x / scale, offset_px.y / scale), features.max_normal_depth_step_mm);
+      const cv::Mat normals =
+          ComputeDepthNormals(depths[level], PyramidLevelCamera(camera, static_cast<int>(level)),
+                              cv::Point(offset_px.x / scale, offset_px.y / scale),
+                              features.max_normal_depth_step_mm, features.normal_frame);
       maps[ModalityIndex(Modality::kDepthNormal)] = QuantizeNormals(normals);
     }
   });

@@ -17,8 +17,10 @@
 namespace layermod {
 
 // Version 2 added the view tree (view_tree.bin); version 1 archives still load, their tree is
-// built when they are read.
-inline constexpr int kArchiveFormatVersion = 2;
+// built when they are read. Version 3 quantizes depth normals in each pixel's viewing-ray frame
+// (the profile's features.normal_frame); older archives read as camera-frame ones and are
+// matched on scenes quantized that way.
+inline constexpr int kArchiveFormatVersion = 3;
 inline constexpr int kOldestArchiveFormatVersion = 1;
 
 // One object of an archive.

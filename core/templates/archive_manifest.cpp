@@ -257,6 +257,10 @@ ParsedManifest ManifestFromJson(const nlohmann::json& json) {
     const JsonFields object(objects[i], kWhat, "objects[" + std::to_string(i) + "]");
     parsed.manifest.objects.push_back(ReadObject(object));
     parsed.meshes.push_back(ReadMeshInfo(object.Object("mesh")));
+    // Before format 3 depth normals were quantized in the camera frame, and profiles did not say.
+    if (parsed.format_version < 3) {
+      parsed.manifest.objects.back().profile.features.normal_frame = NormalFrame::kCamera;
+    }
   }
   const JsonFields tables = fields.Object("tables");
   parsed.template_table = ReadTable(tables.Object("templates"));

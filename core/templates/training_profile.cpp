@@ -144,7 +144,7 @@ std::vector<int> ReadSpread(const JsonFields& fields) {
 FeatureOptions ReadFeatures(const JsonFields& fields) {
   fields.RejectUnknown({"color_features", "normal_features", "min_features", "weak_gradient",
                         "strong_gradient", "max_normal_depth_step_mm", "pyramid_levels",
-                        "spread_px", "depth_edge_fraction"});
+                        "spread_px", "depth_edge_fraction", "normal_frame"});
   FeatureOptions options;
   if (fields.Has("color_features")) options.color_features = ReadInt(fields, "color_features");
   if (fields.Has("normal_features")) options.normal_features = ReadInt(fields, "normal_features");
@@ -158,6 +158,11 @@ FeatureOptions ReadFeatures(const JsonFields& fields) {
   if (fields.Has("spread_px")) options.spread_px = ReadSpread(fields);
   if (fields.Has("depth_edge_fraction")) {
     options.depth_edge_fraction = ReadFloat(fields, "depth_edge_fraction");
+  }
+  if (fields.Has("normal_frame")) {
+    const std::optional<NormalFrame> frame = NormalFrameFromName(fields.String("normal_frame"));
+    if (!frame) fields.Fail("normal_frame", "must be \"camera\" or \"viewing_ray\"");
+    options.normal_frame = *frame;
   }
   return options;
 }
@@ -223,7 +228,8 @@ nlohmann::json ToJson(const TrainingProfile& profile) {
         {"max_normal_depth_step_mm", FloatForJson(features.max_normal_depth_step_mm)},
         {"pyramid_levels", features.pyramid_levels},
         {"spread_px", features.spread_px},
-        {"depth_edge_fraction", FloatForJson(features.depth_edge_fraction)}}},
+        {"depth_edge_fraction", FloatForJson(features.depth_edge_fraction)},
+        {"normal_frame", NormalFrameName(features.normal_frame)}}},
   };
 }
 

@@ -69,8 +69,8 @@ TEST(DepthNormalCandidatesTest, EvenPixelsInsideAwayFromRidges) {
   const RenderedView view = test::PyramidView(roi, {376, 246}, 55, 800.0f, 60.0f);
   cv::Mat interior;
   cv::erode(view.mask, interior, cv::Mat(), cv::Point(-1, -1), 2);
-  const auto candidates =
-      DepthNormalCandidates(view.depth_mm, interior, camera, roi.tl(), 50.0f, 63);
+  const auto candidates = DepthNormalCandidates(view.depth_mm, interior, camera, roi.tl(), 50.0f,
+                                                NormalFrame::kCamera, 63);
   ASSERT_GT(candidates.size(), 1000u);
   for (const FeatureCandidate& c : candidates) {
     ASSERT_EQ(c.x % 2, 0);
@@ -81,20 +81,23 @@ TEST(DepthNormalCandidatesTest, EvenPixelsInsideAwayFromRidges) {
     EXPECT_GT(std::abs(std::abs(du) - std::abs(dv)), 1);  // not on a ridge between faces
   }
   // Asking for more than the stable pixels keeps the unstable ones too.
-  const auto all = DepthNormalCandidates(view.depth_mm, interior, camera, roi.tl(), 50.0f, 100000);
+  const auto all = DepthNormalCandidates(view.depth_mm, interior, camera, roi.tl(), 50.0f,
+                                         NormalFrame::kCamera, 100000);
   EXPECT_GT(all.size(), candidates.size());
 }
 
 TEST(DepthNormalCandidatesTest, NothingWithoutInteriorOrDepth) {
   const PinholeCamera camera = test::KinectCamera();
   const cv::Mat depth(30, 30, CV_32F, cv::Scalar(700.0f));
-  EXPECT_TRUE(DepthNormalCandidates(depth, cv::Mat::zeros(30, 30, CV_8U), camera, {0, 0}, 50.0f, 10)
+  EXPECT_TRUE(DepthNormalCandidates(depth, cv::Mat::zeros(30, 30, CV_8U), camera, {0, 0}, 50.0f,
+                                    NormalFrame::kCamera, 10)
                   .empty());
   EXPECT_TRUE(DepthNormalCandidates(cv::Mat::zeros(30, 30, CV_32F),
                                     cv::Mat(30, 30, CV_8U, cv::Scalar(255)), camera, {0, 0}, 50.0f,
-                                    10)
+                                    NormalFrame::kCamera, 10)
                   .empty());
-  EXPECT_THROW(DepthNormalCandidates(depth, cv::Mat(3, 3, CV_8U), camera, {0, 0}, 50.0f, 10),
+  EXPECT_THROW(DepthNormalCandidates(depth, cv::Mat(3, 3, CV_8U), camera, {0, 0}, 50.0f,
+                                     NormalFrame::kCamera, 10),
                Error);
 }
 

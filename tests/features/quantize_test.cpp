@@ -194,7 +194,8 @@ TEST(QuantizeNormalsTest, TiltedPlaneGetsTheLabelOfItsDirection) {
   // Surface facing the camera, leaning so its normal's (nx, ny) points at 90 deg (image down).
   const Eigen::Vector3d normal = Eigen::Vector3d(0.0, 0.6, -0.8).normalized();
   const cv::Mat depth = test::PlaneDepth(camera, roi, {-150.0, -100.0, 700.0}, normal);
-  const cv::Mat quantized = QuantizeNormals(ComputeDepthNormals(depth, camera, roi.tl(), 50.0f));
+  const cv::Mat quantized =
+      QuantizeNormals(ComputeDepthNormals(depth, camera, roi.tl(), 50.0f, NormalFrame::kCamera));
   EXPECT_EQ(cv::countNonZero(quantized == (1 << 2)), roi.area());
 }
 

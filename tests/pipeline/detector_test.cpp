@@ -105,5 +105,22 @@ TEST(DetectorTest, RefusesArchivesThatCannotBeCombined) {
               HasSubstr("no object 9"));
 }
 
+// An archive of format 2 or older (normals in the camera frame) cannot share a scene with a
+// format 3 one: the scene's normals are quantized once, in one frame.
+TEST(DetectorTest, RefusesArchivesWhoseNormalsAreInDifferentFrames) {
+  const TemplateArchive bracket = test::TrainBracketArchive(600.0, 700.0);
+  ArchiveManifest manifest = bracket.manifest();
+  manifest.objects.at(0).obj_id = 2;
+  manifest.objects.at(0).profile.features.normal_frame = NormalFrame::kCamera;
+  std::vector<TemplateRecord> templates(bracket.templates().begin(), bracket.templates().end());
+  for (TemplateRecord& record : templates) record.obj_id = 2;
+  const TemplateArchive older(manifest, templates);
+  EXPECT_THAT(ThrownMessage<Error>([&] {
+                Detector({bracket, older});
+              }),
+              HasSubstr("archives quantize depth normals in different frames"));
+  EXPECT_NO_THROW(Detector({older}));
+}
+
 }  // namespace
 }  // namespace layermod

@@ -77,7 +77,7 @@ TEST(ArchiveViewTreeTest, TheTreeIsStoredAndReadBackAsStored) {
   const TemplateArchive archive = MakeTreeArchive();
   const std::string bytes = Bytes(archive);
   const test::UnpackedArchive unpacked = test::Unpack(bytes);
-  EXPECT_EQ(unpacked.manifest["format_version"], 2);
+  EXPECT_EQ(unpacked.manifest["format_version"], kArchiveFormatVersion);
   EXPECT_EQ(unpacked.manifest["view_tree"]["clusters"], archive.ViewClusterCount());
   EXPECT_EQ(unpacked.manifest["view_tree"]["radius_deg"], kViewClusterRadiusDeg);
   EXPECT_EQ(Leaders(unpacked.view_tree_bin), archive.ViewLeaders());
