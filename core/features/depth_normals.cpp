@@ -10,6 +10,18 @@
 #include "util/error.h"
 
 namespace layermod {
+
+cv::Vec3f InViewingRayFrame(const cv::Vec3f& normal, float xn, float yn) {
+  // Rodrigues' formula with the unnormalized axis k = r x z = (ry, -rx, 0), |k| = sin, and
+  // cos_angle = rz: R n = n cos_angle + k x n + k (k . n) / (1 + cos_angle). R r = z.
+  const float inverse_length = 1.0f / std::sqrt(xn * xn + yn * yn + 1.0f);
+  const float rx = xn * inverse_length, ry = yn * inverse_length, cos_angle = inverse_length;
+  const float nx = normal[0], ny = normal[1], nz = normal[2];
+  const float along_k = (ry * nx - rx * ny) / (1.0f + cos_angle);
+  return {nx * cos_angle - rx * nz + ry * along_k, ny * cos_angle - ry * nz - rx * along_k,
+          nz * cos_angle + rx * nx + ry * ny};
+}
+
 namespace {
 
 // The fit. Per pixel, the samples of the 5x5 window are (du, dv, q) with q = z0 / z - 1
@@ -149,6 +161,9 @@ struct ColumnSums {
 // all 25 depths are valid (minimum > 0) and within `max_step_mm` of the centre: then n = 25,
 // sum du = sum dv = sum du dv = 0, sum du^2 = sum dv^2 = 50, and the fit is diagonal; only sum w,
 // sum du w and sum dv w vary. `complete[u]` tells the caller which pixels need GeneralFit.
+// kInRayFrame: the normals are turned into each pixel's viewing-ray frame here, where it
+// vectorises.
+template <bool kInRayFrame>
 void CompleteRow(const ColumnSums& columns, const float* z0, int v, int width, const float* xn,
                  const Intrinsics& k, float max_step_mm, float* __restrict out_x,
                  float* __restrict out_y, float* __restrict out_z,
@@ -176,9 +191,11 @@ void CompleteRow(const ColumnSums& columns, const float* z0, int v, int width, c
     const float nz = -(1.0f + c - a * k.fx * xn[u] - b * k.fy * yn0);
     const float length_sq = nx * nx + ny * ny + nz * nz;
     const float scale = ok ? 1.0f / std::sqrt(ok ? length_sq : 1.0f) : 0.0f;
-    out_x[u] = nx * scale;
-    out_y[u] = ny * scale;
-    out_z[u] = nz * scale;
+    cv::Vec3f normal(nx * scale, ny * scale, nz * scale);
+    if constexpr (kInRayFrame) normal = InViewingRayFrame(normal, xn[u], yn0);
+    out_x[u] = normal[0];
+    out_y[u] = normal[1];
+    out_z[u] = normal[2];
     complete[u] = ok ? 1 : 0;
   }
 }
@@ -195,17 +212,6 @@ void CheckInputs(const cv::Mat& depth_mm, const PinholeCamera& camera, float max
 }
 
 }  // namespace
-
-cv::Vec3f InViewingRayFrame(const cv::Vec3f& normal, float xn, float yn) {
-  // Rodrigues' formula with the unnormalized axis k = r x z = (ry, -rx, 0), |k| = sin, and
-  // cos_angle = rz: R n = n cos_angle + k x n + k (k . n) / (1 + cos_angle). R r = z.
-  const float inverse_length = 1.0f / std::sqrt(xn * xn + yn * yn + 1.0f);
-  const float rx = xn * inverse_length, ry = yn * inverse_length, cos_angle = inverse_length;
-  const float nx = normal[0], ny = normal[1], nz = normal[2];
-  const float along_k = (ry * nx - rx * ny) / (1.0f + cos_angle);
-  return {nx * cos_angle - rx * nz + ry * along_k, ny * cos_angle - ry * nz - rx * along_k,
-          nz * cos_angle + rx * nx + ry * ny};
-}
 
 cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera,
                             cv::Point roi_offset, float max_depth_step_mm, NormalFrame frame,
@@ -228,8 +234,10 @@ cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera
   for (int v = 0; v < depth_mm.rows; ++v) {
     const float* z0 = ring.Z(v, kRadius) + kRadius;
     columns.Compute(ring, v);
-    CompleteRow(columns, z0, v, width, xn.data(), k, max_depth_step_mm, out_x.data(), out_y.data(),
-                out_z.data(), complete.data());
+    const auto complete_row =
+        frame == NormalFrame::kViewingRay ? CompleteRow<true> : CompleteRow<false>;
+    complete_row(columns, z0, v, width, xn.data(), k, max_depth_step_mm, out_x.data(), out_y.data(),
+                 out_z.data(), complete.data());
     auto* out = normals.ptr<cv::Vec3f>(v);
     const std::uint8_t* wanted = where.empty() ? nullptr : where.ptr<std::uint8_t>(v);
     const float yn = (static_cast<float>(v) - k.cy) / k.fy;
@@ -239,8 +247,8 @@ cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera
         out[u] = {out_x[u], out_y[u], out_z[u]};
       } else if (z0[u] > 0.0f) {
         out[u] = GeneralFit(ring, k, u, v, max_depth_step_mm);
+        if (frame == NormalFrame::kViewingRay) out[u] = InViewingRayFrame(out[u], xn[u], yn);
       }
-      if (frame == NormalFrame::kViewingRay) out[u] = InViewingRayFrame(out[u], xn[u], yn);
     }
     ring.Advance(v);
   }

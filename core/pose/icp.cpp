@@ -71,10 +71,14 @@ struct StepResult {
   int inliers = 0;
 };
 
-// One Gauss-Newton step of point-to-plane alignment (model normals, small-angle linearisation).
+// One Gauss-Newton step of point-to-plane alignment (model normals, small-angle linearisation),
+// the rotation taken about `pivot` (the model's centre at `pose`). About the camera's origin a
+// small rotation would also move the part by its distance times the angle (12 mm per degree at
+// 700 mm): rotation and translation would be nearly interchangeable unknowns, and the step
+// limits (max_step_deg, max_step_mm) would let a step move the part far more than they say.
 StepResult SolveStep(const std::vector<SurfaceSample>& samples, const Pose& pose,
                      const PinholeCamera& camera, const cv::Mat& depth_mm, double gate_mm,
-                     double huber_mm) {
+                     double huber_mm, const Eigen::Vector3d& pivot) {
   Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
   StepResult result;
@@ -86,7 +90,7 @@ StepResult SolveStep(const std::vector<SurfaceSample>& samples, const Pose& pose
     const Eigen::Vector3d normal = pose.R * sample.normal_in_model;
     const double residual = normal.dot(point - scene);
     Eigen::Matrix<double, 6, 1> jacobian;
-    jacobian << point.cross(normal), normal;
+    jacobian << (point - pivot).cross(normal), normal;
     const double weight = std::abs(residual) <= huber_mm ? 1.0 : huber_mm / std::abs(residual);
     const Eigen::Matrix<double, 6, 1> weighted = weight * jacobian;
     // The lower triangle only: the LDLT solve below reads no other entry.
@@ -153,12 +157,14 @@ bool Drifted(const Pose& start, const Pose& pose, const Eigen::Vector3d& centre,
   return moved_mm > options.max_drift_mm || turned_deg > options.max_drift_deg;
 }
 
-Pose ApplyUpdate(const Pose& pose, const Eigen::Matrix<double, 6, 1>& update) {
+// `update` (rotation about `pivot`, then translation) applied to `pose`.
+Pose ApplyUpdate(const Pose& pose, const Eigen::Matrix<double, 6, 1>& update,
+                 const Eigen::Vector3d& pivot) {
   const Eigen::Vector3d omega = update.head<3>();
   const double angle = omega.norm();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   if (angle > 1e-12) rotation = Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
-  return Pose{rotation, update.tail<3>()} * pose;
+  return Pose{rotation, pivot - rotation * pivot + update.tail<3>()} * pose;
 }
 
 }  // namespace
@@ -189,6 +195,7 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
   const int per_render = std::max(1, options.max_iterations / options.renders);
   std::vector<SurfaceSample> samples;
   Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
+  const Eigen::Vector3d centre = MeanPosition(mesh);
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     if (iteration % per_render == 0) {
       samples = SampleVisibleSurface(mesh, camera, result.cam_from_model, options.sample_step_px);
@@ -197,14 +204,15 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
     // The gate shrinks geometrically: wide while the pose is rough, tight once it is close.
     const double gate = std::max(options.final_max_distance_mm,
                                  options.initial_max_distance_mm * std::pow(0.7, iteration));
+    const Eigen::Vector3d pivot = result.cam_from_model * centre;
     const StepResult step =
-        SolveStep(samples, result.cam_from_model, camera, depth_mm, gate, options.huber_mm);
+        SolveStep(samples, result.cam_from_model, camera, depth_mm, gate, options.huber_mm, pivot);
     result.iterations = iteration + 1;
     if (step.inliers < 6) break;
     Eigen::Matrix<double, 6, 1> move = step.update;
     if (KeepsDirection(step.update, velocity)) move += kMomentum * velocity;
     velocity = ClampStep(move, options);
-    result.cam_from_model = ApplyUpdate(result.cam_from_model, velocity);
+    result.cam_from_model = ApplyUpdate(result.cam_from_model, velocity, pivot);
     const double motion_mm =
         step.update.tail<3>().norm() + step.update.head<3>().norm() * kRotationArmMm;
     if (motion_mm < options.convergence_mm && gate <= options.final_max_distance_mm) {
@@ -212,12 +220,13 @@ IcpResult RefinePoseIcp(const RenderMesh& mesh, const PinholeCamera& camera,
       break;
     }
   }
-  if (Drifted(initial, result.cam_from_model, MeanPosition(mesh), options)) {
+  if (Drifted(initial, result.cam_from_model, centre, options)) {
     result.cam_from_model = initial;
     result.converged = false;
   }
-  const StepResult final_step = SolveStep(samples, result.cam_from_model, camera, depth_mm,
-                                          options.final_max_distance_mm, options.huber_mm);
+  const StepResult final_step =
+      SolveStep(samples, result.cam_from_model, camera, depth_mm, options.final_max_distance_mm,
+                options.huber_mm, result.cam_from_model * centre);
   result.inlier_ratio =
       samples.empty() ? 0.0 : static_cast<double>(final_step.inliers) / samples.size();
   result.rmse_mm =

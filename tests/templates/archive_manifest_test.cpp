@@ -57,17 +57,17 @@ TEST(ArchiveManifestTest, UnmodifiedManifestIsAccepted) {
 }
 
 TEST(ArchiveManifestTest, OtherFormatVersionsAreRejectedFirst) {
-  test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = 3; }),
-                       "format version 3, this tool reads 1 to 2");
+  test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = 4; }),
+                       "format version 4, this tool reads 1 to 3");
   test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = 0; }),
-                       "format version 0, this tool reads 1 to 2");
+                       "format version 0, this tool reads 1 to 3");
   // A future version may change anything else: the version error must come first.
   test::ExpectRejected(WithManifest([](nlohmann::json& m) {
                          m["format_version"] = 7;
                          m.erase("camera");
                          m["objects"] = "changed";
                        }),
-                       "format version 7, this tool reads 1 to 2");
+                       "format version 7, this tool reads 1 to 3");
   test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = -1; }),
                        "format version -1");
   test::ExpectRejected(WithManifest([](nlohmann::json& m) { m["format_version"] = "1"; }),
