@@ -38,17 +38,6 @@ void TurnToViewingRay(float xn, float yn, float& nx, float& ny, float& nz) {
   nx = x, ny = y, nz = z;
 }
 
-}  // namespace
-
-cv::Vec3f InViewingRayFrame(const cv::Vec3f& normal, float xn, float yn) {
-  float x = normal[0], y = normal[1], z = normal[2];
-  TurnToViewingRay(xn, yn, x, y, z);
-  const float inverse_length = 1.0f / std::sqrt(xn * xn + yn * yn + 1.0f);
-  return {x * inverse_length, y * inverse_length, z * inverse_length};
-}
-
-namespace {
-
 // The fit. Per pixel, the samples of the 5x5 window are (du, dv, q) with q = z0 / z - 1
 // (dimensionless and small, so float sums stay accurate). On a plane n . X = d with
 // X = z (xn, yn, 1) and xn = (u - cx) / fx, 1 / z = (n / d) . (xn, yn, 1) is affine in the pixel
@@ -238,6 +227,13 @@ void CheckInputs(const cv::Mat& depth_mm, const PinholeCamera& camera, float max
 
 }  // namespace
 
+cv::Vec3f InViewingRayFrame(const cv::Vec3f& normal, float xn, float yn) {
+  float x = normal[0], y = normal[1], z = normal[2];
+  TurnToViewingRay(xn, yn, x, y, z);
+  const float inverse_length = 1.0f / std::sqrt(xn * xn + yn * yn + 1.0f);
+  return {x * inverse_length, y * inverse_length, z * inverse_length};
+}
+
 cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera,
                             cv::Point roi_offset, float max_depth_step_mm, NormalFrame frame,
                             const cv::Mat& where) {
@@ -256,11 +252,11 @@ cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera
   std::vector<float> xn(width), out_x(width), out_y(width), out_z(width);
   std::vector<std::uint8_t> complete(width);
   for (int u = 0; u < width; ++u) xn[u] = (static_cast<float>(u) - k.cx) / k.fx;
+  const auto complete_row =
+      frame == NormalFrame::kViewingRay ? CompleteRow<true> : CompleteRow<false>;
   for (int v = 0; v < depth_mm.rows; ++v) {
     const float* z0 = ring.Z(v, kRadius) + kRadius;
     columns.Compute(ring, v);
-    const auto complete_row =
-        frame == NormalFrame::kViewingRay ? CompleteRow<true> : CompleteRow<false>;
     complete_row(columns, z0, v, width, xn.data(), k, max_depth_step_mm, out_x.data(), out_y.data(),
                  out_z.data(), complete.data());
     auto* out = normals.ptr<cv::Vec3f>(v);
