@@ -10,9 +10,10 @@
 namespace layermod {
 
 // {"format_version", "tool_version", "created_utc", "camera", "templates", "objects": [{...,
-// "views", "normal_frame" ("camera" or "viewing_ray", features/normal_frame.h), "layers": [{"index", "depth_mm", "templates", "weak", "view_clusters", "color_features",
-// "normal_features", "depth_edges"}]}]}; feature and edge counts as {"min", "mean", "max"} over
-// the layer's templates that are not weak; view_clusters 0 for a layer without a view tree.
+// "views", "normal_frame" ("camera" or "viewing_ray", features/normal_frame.h), "layers":
+// [{"index", "depth_mm", "templates", "weak", "view_clusters", "color_features", "normal_features",
+// "depth_edges"}]}]}; feature and edge counts as {"min", "mean", "max"} over the layer's templates
+// that are not weak; view_clusters 0 for a layer without a view tree.
 nlohmann::json ArchiveInfoJson(const TemplateArchive& archive);
 
 }  // namespace layermod
