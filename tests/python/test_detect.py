@@ -112,3 +112,5 @@ def test_info_is_what_inspect_json_prints(archive_path):
     assert info == inspected
     assert info["objects"][0]["name"] == "bracket"
     assert len(info["objects"][0]["layers"]) == 5
+    assert info["format_version"] == layermod.ARCHIVE_FORMAT_VERSION == 3
+    assert info["objects"][0]["normal_frame"] == "viewing_ray"
