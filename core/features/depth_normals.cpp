@@ -10,7 +10,6 @@
 #include "util/error.h"
 
 namespace layermod {
-
 namespace {
 
 // 1 / (1 + sqrt(1 + s)) for s = xn^2 + yn^2: a fit of degree 5, within 4e-4 over s in [0, 4]
@@ -174,11 +173,12 @@ struct ColumnSums {
 // One row of complete-window fits, branch-free so that it vectorises. A window is complete when
 // all 25 depths are valid (minimum > 0) and within `max_step_mm` of the centre: then n = 25,
 // sum du = sum dv = sum du dv = 0, sum du^2 = sum dv^2 = 50, and the fit is diagonal; only sum w,
-// sum du w and sum dv w vary. `complete[u]` tells the caller which pixels need GeneralFit.
+// sum du w and sum dv w vary. `complete[u]` tells the caller which pixels need GeneralFit. yn0 and
+// xn are the row's and the columns' normalized image coordinates.
 // kInRayFrame: the normals are turned into each pixel's viewing-ray frame here, where it
 // vectorises.
 template <bool kInRayFrame>
-void CompleteRow(const ColumnSums& columns, const float* z0, int v, int width, const float* xn,
+void CompleteRow(const ColumnSums& columns, const float* z0, float yn0, int width, const float* xn,
                  const Intrinsics& k, float max_step_mm, float* __restrict out_x,
                  float* __restrict out_y, float* __restrict out_z,
                  std::uint8_t* __restrict complete) {
@@ -187,7 +187,6 @@ void CompleteRow(const ColumnSums& columns, const float* z0, int v, int width, c
   const float* cdv = columns.dv_w.data();
   const float* lo = columns.min_z.data();
   const float* hi = columns.max_z.data();
-  const float yn0 = (static_cast<float>(v) - k.cy) / k.fy;
   for (int u = 0; u < width; ++u) {
     const float sum_w = cw[u] + cw[u + 1] + cw[u + 2] + cw[u + 3] + cw[u + 4];
     const float sum_du_w = 2.0f * (cw[u + 4] - cw[u]) + (cw[u + 3] - cw[u + 1]);
@@ -256,12 +255,12 @@ cv::Mat ComputeDepthNormals(const cv::Mat& depth_mm, const PinholeCamera& camera
       frame == NormalFrame::kViewingRay ? CompleteRow<true> : CompleteRow<false>;
   for (int v = 0; v < depth_mm.rows; ++v) {
     const float* z0 = ring.Z(v, kRadius) + kRadius;
+    const float yn = (static_cast<float>(v) - k.cy) / k.fy;
     columns.Compute(ring, v);
-    complete_row(columns, z0, v, width, xn.data(), k, max_depth_step_mm, out_x.data(), out_y.data(),
-                 out_z.data(), complete.data());
+    complete_row(columns, z0, yn, width, xn.data(), k, max_depth_step_mm, out_x.data(),
+                 out_y.data(), out_z.data(), complete.data());
     auto* out = normals.ptr<cv::Vec3f>(v);
     const std::uint8_t* wanted = where.empty() ? nullptr : where.ptr<std::uint8_t>(v);
-    const float yn = (static_cast<float>(v) - k.cy) / k.fy;
     for (int u = 0; u < width; ++u) {
       if (wanted != nullptr && wanted[u] == 0) continue;
       if (complete[u] != 0) {

@@ -7,8 +7,7 @@
 namespace layermod {
 
 // The frame a normal is expressed in.
-// - kCamera: the camera's (what LineMOD does, and archives of format 2 and older were trained
-// with).
+// - kCamera: the camera's, as in LineMOD and in archives of format 2 and older.
 // - kViewingRay: each pixel's own frame, the camera frame turned by the smallest rotation that
 //   takes the pixel's viewing ray to the optical axis. A part seen off the image centre then gives
 //   the normals it gives at the centre with the same view of it: in the camera frame they are

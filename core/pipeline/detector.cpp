@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
@@ -36,11 +37,20 @@ bool SameIntrinsics(const PinholeCamera& a, const PinholeCamera& b) {
          close(a.cx, b.cx) && close(a.cy, b.cy);
 }
 
-// Parameters the scene is quantized with must be the same for every object matched on it.
-bool SameSceneFeatures(const FeatureOptions& a, const FeatureOptions& b) {
-  return a.pyramid_levels == b.pyramid_levels && a.spread_px == b.spread_px &&
-         a.weak_gradient == b.weak_gradient &&
-         a.max_normal_depth_step_mm == b.max_normal_depth_step_mm;
+// Parameters the scene is quantized with must be the same for every object matched on it: what
+// differs between `a` and `b`, for the detector's error, or "" when nothing does.
+std::string SceneFeatureDifference(const FeatureOptions& a, const FeatureOptions& b) {
+  if (a.normal_frame != b.normal_frame) {
+    return "archives quantize depth normals in different frames (format 2 and older in the "
+           "camera's, format 3 in each pixel's viewing ray's); retrain the older ones with this "
+           "version";
+  }
+  const bool same = a.pyramid_levels == b.pyramid_levels && a.spread_px == b.spread_px &&
+                    a.weak_gradient == b.weak_gradient &&
+                    a.max_normal_depth_step_mm == b.max_normal_depth_step_mm;
+  return same ? ""
+              : "archives use different feature parameters (pyramid, spread, thresholds); train "
+                "them with the same profile features";
 }
 
 std::vector<LayerEdgeRange> EdgeRanges(const TemplateArchive& archive,
@@ -335,17 +345,8 @@ void Detector::IndexObjects() {
       if (!seen.insert(object.obj_id).second) {
         throw Error("detector: object id " + std::to_string(object.obj_id) + " appears twice");
       }
-      if (object.profile.features.normal_frame != reference.normal_frame) {
-        throw Error(
-            "detector: archives quantize depth normals in different frames (format 2 and older "
-            "in the camera's, format 3 in each pixel's viewing ray's); retrain the older ones "
-            "with this version");
-      }
-      if (!SameSceneFeatures(object.profile.features, reference)) {
-        throw Error(
-            "detector: archives use different feature parameters (pyramid, spread, "
-            "thresholds); train them with the same profile features");
-      }
+      const std::string difference = SceneFeatureDifference(object.profile.features, reference);
+      if (!difference.empty()) throw Error("detector: " + difference);
       objects_.push_back(
           {a, object.obj_id, EdgeRanges(archive, object), LargestTemplate(archive, object),
            SimplifyToTriangleCount(object.mesh, kPoseMeshTriangles, kPoseMeshFinestCellMm),
