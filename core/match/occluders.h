@@ -5,12 +5,13 @@
 // missed.
 //
 // Where templates are ranked (scored on the grid of their top pyramid level), a feature on an
-// occluder scores at least kHiddenFeatureScore whatever its orientation: about what the visible
-// features of a right template score on average, so that a partly hidden part ranks about as it
-// would in full view, and a template over an occluder alone ranks below right matches. Hits are
-// refined on the scene as it is, and at level 0 the features on occluders are counted out: a
-// match's similarity is that of its visible features, and it needs MatchOptions::min_visible_share
-// of them (RawMatch::visible_share).
+// occluder scores at least kHiddenFeatureScore whatever its orientation: half a match, so that a
+// partly hidden part still reaches the refinements while a template lying over an occluder
+// alone ranks below the right matches in full view. Hits are refined on the scene as it is, and
+// at level 0 the features on occluders are counted out: a match's similarity is that of its
+// visible features, and it needs MatchOptions::min_visible_share of them
+// (RawMatch::visible_share). Pixels past the image's border (a part the border cuts) are hidden
+// in the same way.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -22,11 +23,10 @@
 
 namespace layermod {
 
-inline constexpr int kHiddenFeatureScore = 3;  // of kMaxFeatureScore
-// Past the image's border (a part the border cuts) a feature is credited less: there the hidden
-// share of a template is anything up to a half, not what an occluder covers, and with 3 of 4 the
-// templates reaching far past the border with a straight edge inside took the refinements.
-inline constexpr int kOutsideFeatureScore = 2;
+// Of kMaxFeatureScore. With 3 of 4 (about what the visible features of a right template score)
+// templates lying over a near object of the clutter, or reaching far past the image's border
+// with a straight edge inside, crowded the refinements and the pose candidates (docs/NOTES.md).
+inline constexpr int kHiddenFeatureScore = 2;
 
 // What a search with occluders needs (TemplateSearch::occluders).
 struct Occluders {

@@ -134,27 +134,6 @@ cv::Rect ReachOfPoints(const std::vector<cv::Point>& points, const cv::Size& lar
   return reach;
 }
 
-// The occluders of one layer's search around `points` (region pixels): what lies nearer than the
-// object can be at that layer, within reach of the templates anchored near the points; nullopt
-// where nothing does. `depth_levels_mm`: WholeMillimetreDepths of the prepared region.
-std::optional<Occluders> LayerOccluders(const PreparedRegion& prepared,
-                                        const std::vector<cv::Mat>& depth_levels_mm,
-                                        const ArchiveObject& object, int layer,
-                                        const std::vector<cv::Point>& points,
-                                        const cv::Size& largest_template,
-                                        const DetectorOptions& options) {
-  const double nearest_mm = NearestSurfaceMm(
-      object.layer_depths_mm[static_cast<std::size_t>(layer)], object.sphere.radius_mm);
-  std::vector<cv::Mat> masks =
-      OccludersNearerThan(depth_levels_mm, nearest_mm,
-                          ReachOfPoints(points, largest_template, options.coarse.point_step_px));
-  if (masks.empty()) return std::nullopt;
-  for (std::size_t level = 0; level < prepared.outside_image.size(); ++level) {
-    masks[level] |= prepared.outside_image[level];
-  }
-  return MakeOccluders(prepared.scene, std::move(masks));
-}
-
 // The search of one layer's templates, with their facts (`object_facts`: TemplateFactsOf the
 // object's templates, TemplatesOf(obj_id)).
 TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, int layer,
@@ -166,18 +145,34 @@ TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, 
           object_facts.subspan(first, templates.size())};
 }
 
+// The layers each kept block of an object is matched with (Scene-Patch, paper §3.4).
+std::set<int> KeptLayers(const ObjectDiagnostics& diagnostics) {
+  std::set<int> layers;
+  for (int index : diagnostics.coarse.kept) {
+    const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
+    layers.insert(diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index);
+  }
+  return layers;
+}
+
+// SharedBoundMm of a layer of `object`.
+int LayerBoundMm(const ArchiveObject& object, int layer) {
+  return SharedBoundMm(object.layer_depths_mm[static_cast<std::size_t>(layer)],
+                       object.sphere.radius_mm);
+}
+
 // Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
 // templates, only around its surviving detection points. Blocks of one layer share a search,
 // so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
-// nearer than the object can be at that layer as occluders.
-// `occluder_depths_mm`: WholeMillimetreDepths of the region when occlusion-aware, else empty.
-// `border`: the padding past the image as occluders (nullptr when the region has none); a layer
-// without occluders of its own uses it.
-std::vector<RawMatch> MatchKeptBlocks(
-    const PreparedRegion& prepared, const std::vector<cv::Mat>& occluder_depths_mm,
-    const Occluders* border, const TemplateArchive& archive, const ArchiveObject& object,
-    std::span<const TemplateFacts> object_facts, const cv::Size& largest_template,
-    const ObjectDiagnostics& diagnostics, const DetectorOptions& options) {
+// nearer than the object can be at that layer as occluders (`occluders`, empty when occlusion
+// is ignored). `border`: the padding past the image as occluders (nullptr when the region has
+// none); a layer without occluders of its own uses it.
+std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared, const OccluderBank& occluders,
+                                      const Occluders* border, const TemplateArchive& archive,
+                                      const ArchiveObject& object,
+                                      std::span<const TemplateFacts> object_facts,
+                                      const ObjectDiagnostics& diagnostics,
+                                      const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
   std::map<int, std::vector<cv::Point>> points_by_layer;
   for (int index : diagnostics.coarse.kept) {
@@ -190,17 +185,12 @@ std::vector<RawMatch> MatchKeptBlocks(
     }
   }
   std::vector<TemplateSearch> searches;
-  std::vector<std::optional<Occluders>> occluders(points_by_layer.size());
   searches.reserve(points_by_layer.size());
   for (const auto& [layer, points] : points_by_layer) {
     searches.push_back(LayerSearch(archive, object.obj_id, layer, object_facts));
     searches.back().candidate_points = &points;
-    searches.back().occluders = border;
-    if (occluder_depths_mm.empty()) continue;
-    std::optional<Occluders>& layer_occluders = occluders[searches.size() - 1];
-    layer_occluders = LayerOccluders(prepared, occluder_depths_mm, object, layer, points,
-                                     largest_template, options);
-    if (layer_occluders) searches.back().occluders = &*layer_occluders;
+    const Occluders* layer_occluders = occluders.Find(LayerBoundMm(object, layer));
+    searches.back().occluders = layer_occluders != nullptr ? layer_occluders : border;
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
@@ -434,20 +424,26 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
       prepared.outside_image.empty()
           ? std::nullopt
           : std::optional<Occluders>(
-                MakeOccluders(prepared.scene, prepared.outside_image, kOutsideFeatureScore,
+                MakeOccluders(prepared.scene, prepared.outside_image, kHiddenFeatureScore,
                               cv::Rect(-prepared.region_px.tl(), used.color.size())));
   const Occluders* border_occluders = border ? &*border : nullptr;
-  // Occlusion-aware matching compares the depth with each layer's bound in whole millimetres.
-  const std::vector<cv::Mat> occluder_depths_mm =
-      scene_patch && options.occlusion == OcclusionMode::kAware
-          ? WholeMillimetreDepths(prepared.depth_levels_mm)
-          : std::vector<cv::Mat>();
   result.timings.prepare_ms = MsSince(stage_start);
 
   // The objects are matched side by side, then posed side by side: one object's serial steps
   // (ranking, suppression, the last candidates of a parallel loop) overlap another's work. Each
   // stage's time is the wall time of all objects together.
   stage_start = Clock::now();
+  std::set<int> bounds_mm;  // of every layer a kept block is matched with, when aware
+  for (std::size_t i = 0; scene_patch && options.occlusion == OcclusionMode::kAware &&
+                          i < objects_.size();
+       ++i) {
+    const ArchiveObject& object = archives_[objects_[i].archive]->Object(objects_[i].obj_id);
+    for (int layer : KeptLayers(result.diagnostics[i])) {
+      bounds_mm.insert(LayerBoundMm(object, layer));
+    }
+  }
+  const OccluderBank occluders =
+      bounds_mm.empty() ? OccluderBank() : OccluderBank(prepared, bounds_mm);
   tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
     const ObjectEntry& entry = objects_[i];
     const TemplateArchive& archive = *archives_[entry.archive];
@@ -457,8 +453,8 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
     diagnostics.matches =
         scene_patch
-            ? MatchKeptBlocks(prepared, occluder_depths_mm, border_occluders, archive, object,
-                              entry.facts, entry.largest_template, diagnostics, options)
+            ? MatchKeptBlocks(prepared, occluders, border_occluders, archive, object, entry.facts,
+                              diagnostics, options)
             : MatchEveryLayer(prepared, border_occluders, archive, object, entry.facts, options);
   });
   result.timings.match_ms = MsSince(stage_start);

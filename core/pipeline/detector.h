@@ -38,7 +38,7 @@ struct DetectorOptions {
   RegionDivisionOptions regions;
   CoarsePositioningOptions coarse;
   MatchOptions match;
-  OcclusionMode occlusion = OcclusionMode::kIgnore;  // aware: see match/occluders.h
+  OcclusionMode occlusion = OcclusionMode::kAware;  // see match/occluders.h
   int max_instances = 1;                             // detections kept per object
   int pose_candidates = 12;  // best raw matches per object that get a pose and a verification
   // Detections less confident (pipeline/confidence.h) are not reported. 0.8 keeps precision at

@@ -4,8 +4,14 @@
 // can be while those templates fit it.
 #pragma once
 
+#include <map>
 #include <opencv2/core.hpp>
+#include <optional>
+#include <set>
 #include <vector>
+
+#include "match/occluders.h"
+#include "pipeline/scene_preparation.h"
 
 namespace layermod {
 
@@ -24,5 +30,28 @@ std::vector<cv::Mat> WholeMillimetreDepths(const std::vector<cv::Mat>& depth_lev
 // pixel is (or without depth).
 std::vector<cv::Mat> OccludersNearerThan(const std::vector<cv::Mat>& depth_levels_mm,
                                          double nearest_surface_mm, const cv::Rect& reach_px);
+
+// Layers share occluders: a layer's bound (NearestSurfaceMm) is rounded down to a multiple of
+// kOccluderBoundStepMm, so that one ranked copy of the scene (match/occluders.h) serves every
+// layer, of every object, whose bound rounds the same. Rounding down leaves out at most that
+// much of what lies in front, never takes the object's own surface for an occluder. (One copy
+// per layer, a frame of eight objects made up to 55 of them, a quarter of the frame's time.)
+inline constexpr int kOccluderBoundStepMm = 100;
+int SharedBoundMm(double layer_depth_mm, double sphere_radius_mm);  // <= 0: nothing is nearer
+
+// The occluders of one frame's Scene-Patch searches, one per shared bound, each over the whole
+// prepared region with the padding past the image's border hidden as well.
+class OccluderBank {
+ public:
+  OccluderBank() = default;  // nothing is an occluder (occlusion ignored)
+  // Built side by side for `bounds_mm` (SharedBoundMm values).
+  OccluderBank(const PreparedRegion& prepared, const std::set<int>& bounds_mm);
+
+  // nullptr where nothing lies nearer than the bound, or for a bound not built.
+  const Occluders* Find(int bound_mm) const;
+
+ private:
+  std::map<int, std::optional<Occluders>> by_bound_mm_;
+};
 
 }  // namespace layermod

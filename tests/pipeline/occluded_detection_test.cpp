@@ -13,11 +13,12 @@ namespace {
 TEST(OccludedDetectionTest, WithNothingInFrontAwareMatchingGivesTheSameDetections) {
   DetectorOptions options;
   options.min_confidence = 0.0;
-  options.occlusion = OcclusionMode::kAware;
-  const DetectionResult aware =
+  ASSERT_EQ(options.occlusion, OcclusionMode::kAware);  // the default (BracketFrame().result)
+  options.occlusion = OcclusionMode::kIgnore;
+  const DetectionResult ignore =
       test::BracketFrame().detector.Detect(test::BracketFrame().capture, options);
-  const DetectionResult& ignore = test::BracketFrame().result;
-  ASSERT_FALSE(ignore.detections.empty());
+  const DetectionResult& aware = test::BracketFrame().result;
+  ASSERT_FALSE(aware.detections.empty());
   ASSERT_EQ(aware.detections.size(), ignore.detections.size());
   for (std::size_t i = 0; i < aware.detections.size(); ++i) {
     EXPECT_EQ(aware.detections[i].template_id, ignore.detections[i].template_id);
