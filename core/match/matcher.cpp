@@ -651,7 +651,7 @@ std::vector<RawMatch> MatchTemplateGroups(const PreparedScene& scene,
   areas.reserve(complete.size());
   for (const TemplateSearch& search : complete) {
     through_tree = through_tree || SearchesTree(search, options);
-    const PreparedScene& ranked = search.occluders == nullptr ? scene : search.occluders->ranked;
+    const PreparedScene& ranked = search.occluders == nullptr ? scene : *search.occluders->ranked;
     areas.push_back(search.candidate_points == nullptr
                         ? CandidateArea{}
                         : MakeCandidateArea(*search.candidate_points, radius_px,

@@ -57,7 +57,19 @@ Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks, 
                                         masks[level], hidden_credit));
     }
   }
-  return {std::move(masks), hidden_credit, clear_px, PreparedScene(std::move(ranked))};
+  return {std::move(masks), hidden_credit, clear_px,
+          std::make_shared<const PreparedScene>(std::move(ranked))};
+}
+
+Occluders WithLevelZeroMask(const Occluders& shared, cv::Mat level0_mask) {
+  if (shared.masks.empty() || level0_mask.type() != CV_8UC1 ||
+      level0_mask.size() != shared.masks.front().size()) {
+    throw Error("occluder mask must be CV_8UC1 of the scene level's size");
+  }
+  Occluders occluders = shared;
+  occluders.masks.front() = std::move(level0_mask);
+  occluders.clear_px = cv::Rect();  // not known for the new mask
+  return occluders;
 }
 
 VisibleScore ScoreVisibleFeatures(const TemplateLevel& level, const SceneLevel& scene,

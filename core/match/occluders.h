@@ -14,6 +14,7 @@
 // in the same way.
 #pragma once
 
+#include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -38,14 +39,19 @@ struct Occluders {
   // The scene templates are ranked on: above level 0, its linear memories score at least
   // `hidden_credit` at occluder pixels for every feature (its response maps, which only
   // refinement reads, are the scene's); level 0 (the top level only of templates without
-  // coarser features) as the scene is.
-  PreparedScene ranked;
+  // coarser features) as the scene is. Shared by the searches made WithLevelZeroMask.
+  std::shared_ptr<const PreparedScene> ranked;
 };
 
 // Throws Error unless there is one mask per level of `scene`, CV_8UC1 of that level's size, and
 // the credit lies in 0..kMaxFeatureScore.
 Occluders MakeOccluders(const PreparedScene& scene, std::vector<cv::Mat> masks,
                         int hidden_credit = kHiddenFeatureScore, const cv::Rect& clear_px = {});
+
+// `shared` with `level0_mask` as the pixels counted out at level 0: ranked on `shared`'s copy of
+// the scene (no copy is made), the features refined at level 0 judged by a mask of their own.
+// Throws Error unless the mask is CV_8UC1 of the size of `shared`'s level-0 mask.
+Occluders WithLevelZeroMask(const Occluders& shared, cv::Mat level0_mask);
 
 // A template level's features whose modality the scene has, at one position, split by an
 // occluder mask.

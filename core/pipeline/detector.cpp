@@ -167,12 +167,11 @@ int LayerBoundMm(const ArchiveObject& object, int layer) {
 // nearer than the object can be at that layer as occluders (`occluders`, empty when occlusion
 // is ignored). `border`: the padding past the image as occluders (nullptr when the region has
 // none); a layer without occluders of its own uses it.
-std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared, const OccluderBank& occluders,
-                                      const Occluders* border, const TemplateArchive& archive,
-                                      const ArchiveObject& object,
-                                      std::span<const TemplateFacts> object_facts,
-                                      const ObjectDiagnostics& diagnostics,
-                                      const DetectorOptions& options) {
+std::vector<RawMatch> MatchKeptBlocks(
+    const PreparedRegion& prepared, const OccluderBank& occluders, const Occluders* border,
+    const TemplateArchive& archive, const ArchiveObject& object,
+    std::span<const TemplateFacts> object_facts, const cv::Size& largest_template,
+    const ObjectDiagnostics& diagnostics, const DetectorOptions& options) {
   const cv::Point offset = prepared.region_px.tl();
   std::map<int, std::vector<cv::Point>> points_by_layer;
   for (int index : diagnostics.coarse.kept) {
@@ -185,12 +184,17 @@ std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared, const Occl
     }
   }
   std::vector<TemplateSearch> searches;
+  std::vector<std::optional<Occluders>> layer_occluders(points_by_layer.size());
   searches.reserve(points_by_layer.size());
   for (const auto& [layer, points] : points_by_layer) {
     searches.push_back(LayerSearch(archive, object.obj_id, layer, object_facts));
     searches.back().candidate_points = &points;
-    const Occluders* layer_occluders = occluders.Find(LayerBoundMm(object, layer));
-    searches.back().occluders = layer_occluders != nullptr ? layer_occluders : border;
+    searches.back().occluders = border;
+    std::optional<Occluders>& own = layer_occluders[searches.size() - 1];
+    own = occluders.ForLayer(object.layer_depths_mm[static_cast<std::size_t>(layer)],
+                             object.sphere.radius_mm,
+                             ReachOfPoints(points, largest_template, options.coarse.point_step_px));
+    if (own) searches.back().occluders = &*own;
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
@@ -454,7 +458,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     diagnostics.matches =
         scene_patch
             ? MatchKeptBlocks(prepared, occluders, border_occluders, archive, object, entry.facts,
-                              diagnostics, options)
+                              entry.largest_template, diagnostics, options)
             : MatchEveryLayer(prepared, border_occluders, archive, object, entry.facts, options);
   });
   result.timings.match_ms = MsSince(stage_start);

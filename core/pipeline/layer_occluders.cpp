@@ -78,6 +78,24 @@ OccluderBank::OccluderBank(const PreparedRegion& prepared, const std::set<int>& 
   for (std::size_t i = 0; i < bounds.size(); ++i) {
     by_bound_mm_.emplace(bounds[i], std::move(built[i]));
   }
+  whole_mm_ = whole_mm.front();
+  if (!prepared.outside_image.empty()) outside_image_ = prepared.outside_image.front();
+}
+
+std::optional<Occluders> OccluderBank::ForLayer(double layer_depth_mm, double sphere_radius_mm,
+                                                const cv::Rect& reach_px) const {
+  const Occluders* shared = Find(SharedBoundMm(layer_depth_mm, sphere_radius_mm));
+  if (shared == nullptr) return std::nullopt;
+  // Only pixels within reach are ever looked at.
+  cv::Mat mask = cv::Mat::zeros(whole_mm_.size(), CV_8UC1);
+  const cv::Rect reach = reach_px & cv::Rect(cv::Point(0, 0), whole_mm_.size());
+  if (!reach.empty()) {
+    cv::Mat reached = mask(reach);
+    const double last_mm = std::ceil(NearestSurfaceMm(layer_depth_mm, sphere_radius_mm)) - 1.0;
+    cv::inRange(whole_mm_(reach), 1.0, last_mm, reached);
+    if (!outside_image_.empty()) reached |= outside_image_(reach);
+  }
+  return WithLevelZeroMask(*shared, std::move(mask));
 }
 
 const Occluders* OccluderBank::Find(int bound_mm) const {

@@ -50,8 +50,17 @@ class OccluderBank {
   // nullptr where nothing lies nearer than the bound, or for a bound not built.
   const Occluders* Find(int bound_mm) const;
 
+  // The occluders of one layer's search, whose templates lie within `reach_px` (level-0 region
+  // pixels): ranked on the shared entry of the layer's SharedBoundMm, while at level 0 the
+  // pixels nearer than the layer's own bound (NearestSurfaceMm) and the padding are counted out
+  // (within the reach; the level-0 mask is empty past it). nullopt where the shared entry is.
+  std::optional<Occluders> ForLayer(double layer_depth_mm, double sphere_radius_mm,
+                                    const cv::Rect& reach_px) const;
+
  private:
   std::map<int, std::optional<Occluders>> by_bound_mm_;
+  cv::Mat whole_mm_;  // the region's level-0 depth in whole millimetres
+  cv::Mat outside_image_;  // level 0 of PreparedRegion::outside_image (empty: none)
 };
 
 }  // namespace layermod

@@ -123,7 +123,7 @@ TEST_F(OccludersTest, GridFeaturesReadTheRankedScene) {
   const Occluders occluders = MakeOccluders(prepared, Masks(scene_, cover));
   const int top = static_cast<int>(record_.levels.size()) - 1;
   const TemplateLevel& level = record_.levels[static_cast<std::size_t>(top)];
-  const SceneLevel& ranked = occluders.ranked.LinearizedLevel(top);
+  const SceneLevel& ranked = occluders.ranked->LinearizedLevel(top);
   const SceneLevel& plain = prepared.LinearizedLevel(top);
   const cv::Size cells = GridPositionCount(level, ranked);
   std::vector<GridRowSpan> spans;

@@ -69,6 +69,34 @@ TEST(OccluderBankTest, HidesThePaddingPastTheImageAlongWithTheOccluders) {
   EXPECT_EQ(cv::countNonZero(outside_kept), cv::countNonZero(outside));
 }
 
+TEST(OccluderBankTest, ALayerCountsOutWhatLiesNearerThanItsOwnBoundWithinItsReach) {
+  PreparedRegion region = FrameWithABoxInFront(0);
+  const cv::Rect near_box = cv::Rect(200, 160, 120, 80) - region.region_px.tl();
+  const cv::Rect second_box = cv::Rect(400, 300, 60, 50) - region.region_px.tl();
+  region.depth_levels_mm.front()(second_box).setTo(803.0f);  // nearer than 807, not than 800
+  // A layer at 900 mm of a part of radius 50 mm: bound 0.98 x 900 - 75 = 807 mm, shared 800.
+  ASSERT_EQ(SharedBoundMm(900.0, 50.0), 800);
+  const OccluderBank bank(region, {800});
+  const Occluders* shared = bank.Find(800);
+  ASSERT_NE(shared, nullptr);
+  EXPECT_EQ(cv::countNonZero(shared->masks.front()), near_box.area());
+
+  const std::optional<Occluders> layer =
+      bank.ForLayer(900.0, 50.0, cv::Rect(cv::Point(0, 0), region.depth_levels_mm[0].size()));
+  ASSERT_TRUE(layer.has_value());
+  EXPECT_EQ(layer->ranked, shared->ranked);  // ranked on the shared copy, none made
+  const cv::Mat& mask = layer->masks.front();
+  EXPECT_EQ(cv::countNonZero(mask), near_box.area() + second_box.area());
+  EXPECT_EQ(cv::countNonZero(mask(second_box)), second_box.area());
+
+  const cv::Rect reach(near_box.tl() - cv::Point(10, 10), near_box.br() + cv::Point(10, 10));
+  const std::optional<Occluders> near_only = bank.ForLayer(900.0, 50.0, reach);
+  ASSERT_TRUE(near_only.has_value());
+  EXPECT_EQ(cv::countNonZero(near_only->masks.front()), near_box.area());
+
+  EXPECT_FALSE(bank.ForLayer(600.0, 50.0, reach).has_value());  // shared bound 500: not built
+}
+
 TEST(OccluderBankTest, WithoutDepthNothingIsAnOccluder) {
   cv::Mat color(120, 160, CV_8UC3, cv::Scalar(90, 120, 150));
   const PreparedRegion region =
