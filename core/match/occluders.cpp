@@ -73,22 +73,20 @@ Occluders WithLevelZeroMask(const Occluders& shared, cv::Mat level0_mask) {
 }
 
 VisibleScore ScoreVisibleFeatures(const TemplateLevel& level, const SceneLevel& scene,
-                                  const cv::Mat& occluders, const cv::Point& top_left_px) {
+                                  const cv::Mat& occluders, const cv::Point& top_left_px,
+                                  int sum_of_all) {
   CheckMask(occluders, scene);
   const cv::Rect inside(cv::Point(0, 0), scene.size_px);
-  VisibleScore score;
+  VisibleScore score{0, 0, sum_of_all};
   for (const Feature& feature : level.features) {
     if (!scene.HasModality(feature.modality)) continue;
     ++score.features;
     const int x = top_left_px.x + feature.x;
     const int y = top_left_px.y + feature.y;
-    if (!inside.contains({x, y})) continue;
-    if (occluders.ptr<std::uint8_t>(y)[x] != 0) {
-      ++score.hidden;
-    } else {
-      const cv::Mat& response = scene.responses[ModalityIndex(feature.modality)][feature.label];
-      score.sum += response.ptr<std::uint8_t>(y)[x];
-    }
+    if (!inside.contains({x, y}) || occluders.ptr<std::uint8_t>(y)[x] == 0) continue;
+    ++score.hidden;
+    const cv::Mat& response = scene.responses[ModalityIndex(feature.modality)][feature.label];
+    score.sum -= response.ptr<std::uint8_t>(y)[x];
   }
   return score;
 }

@@ -63,10 +63,13 @@ struct VisibleScore {
   int Visible() const { return features - hidden; }
 };
 
-// VisibleScore of `level` with its top-left at `top_left_px` in `scene`; `occluders`: CV_8UC1
-// of the scene level's size, non-zero at occluder pixels. Features outside the scene count as
-// visible and score nothing. Throws Error for a mask of another size or type.
+// VisibleScore of `level` with its top-left at `top_left_px` in `scene`, whose responses at all
+// the usable features sum to `sum_of_all` (what refinement scored there): only the features on
+// occluders are read back and taken off. `occluders`: CV_8UC1 of the scene level's size,
+// non-zero at occluder pixels. Features outside the scene count as visible and score nothing.
+// Throws Error for a mask of another size or type.
 VisibleScore ScoreVisibleFeatures(const TemplateLevel& level, const SceneLevel& scene,
-                                  const cv::Mat& occluders, const cv::Point& top_left_px);
+                                  const cv::Mat& occluders, const cv::Point& top_left_px,
+                                  int sum_of_all);
 
 }  // namespace layermod

@@ -78,11 +78,18 @@ TEST_F(OccludersTest, FeaturesOnAnOccluderAreCountedOutOfTheScore) {
   EXPECT_NEAR(matches[0].y, box_.y, 4);
   EXPECT_GE(matches[0].similarity_percent, 95.0f);  // the visible features match
   const PreparedScene prepared(scene_.quantized, scene_.spread_px);
+  const SceneLevel& level0 = prepared.Level(0);
+  int sum_of_all = 0;  // what refinement scores at the truth, hidden features included
+  for (const Feature& feature : record_.levels[0].features) {
+    sum_of_all += level0.responses[ModalityIndex(feature.modality)][feature.label].at<std::uint8_t>(
+        box_.y + feature.y, box_.x + feature.x);
+  }
   const VisibleScore at_truth =
-      ScoreVisibleFeatures(record_.levels[0], prepared.Level(0), masks[0], box_.tl());
+      ScoreVisibleFeatures(record_.levels[0], level0, masks[0], box_.tl(), sum_of_all);
   EXPECT_EQ(at_truth.features, static_cast<int>(record_.levels[0].features.size()));
   EXPECT_GT(at_truth.hidden, at_truth.features / 5);
   EXPECT_LT(at_truth.hidden, at_truth.features / 2);
+  EXPECT_LT(at_truth.sum, sum_of_all);  // the covering surface's responses are taken off
   EXPECT_EQ(at_truth.sum, kMaxFeatureScore * at_truth.Visible());
   EXPECT_GT(matches[0].visible_share, 0.5f);
   EXPECT_LT(matches[0].visible_share, 0.8f);
