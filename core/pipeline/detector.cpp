@@ -145,35 +145,11 @@ TemplateSearch LayerSearch(const TemplateArchive& archive, std::int32_t obj_id, 
           object_facts.subspan(first, templates.size())};
 }
 
-// The layers each kept block of an object is matched with (Scene-Patch, paper §3.4).
-std::set<int> KeptLayers(const ObjectDiagnostics& diagnostics) {
-  std::set<int> layers;
-  for (int index : diagnostics.coarse.kept) {
-    const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
-    layers.insert(diagnostics.division.blocks[static_cast<std::size_t>(block.block_index)].layer_index);
-  }
-  return layers;
-}
-
-// SharedBoundMm of a layer of `object`.
-int LayerBoundMm(const ArchiveObject& object, int layer) {
-  return SharedBoundMm(object.layer_depths_mm[static_cast<std::size_t>(layer)],
-                       object.sphere.radius_mm);
-}
-
-// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
-// templates, only around its surviving detection points. Blocks of one layer share a search,
-// so that no template is scored twice. Occlusion-aware, each layer's search sees what lies
-// nearer than the object can be at that layer as occluders (`occluders`, empty when occlusion
-// is ignored). `border`: the padding past the image as occluders (nullptr when the region has
-// none); a layer without occluders of its own uses it.
-std::vector<RawMatch> MatchKeptBlocks(
-    const PreparedRegion& prepared, const OccluderBank& occluders, const Occluders* border,
-    const TemplateArchive& archive, const ArchiveObject& object,
-    std::span<const TemplateFacts> object_facts, const cv::Size& largest_template,
-    const ObjectDiagnostics& diagnostics, const DetectorOptions& options) {
-  const cv::Point offset = prepared.region_px.tl();
-  std::map<int, std::vector<cv::Point>> points_by_layer;
+// Each kept block's layer (Scene-Patch, paper §3.4) with the detection points that survived in
+// its blocks, in pixels of the prepared region at `offset`.
+using LayerPoints = std::map<int, std::vector<cv::Point>>;
+LayerPoints KeptPointsByLayer(const ObjectDiagnostics& diagnostics, const cv::Point& offset) {
+  LayerPoints points_by_layer;
   for (int index : diagnostics.coarse.kept) {
     const BlockCandidates& block = diagnostics.coarse.evaluated[static_cast<std::size_t>(index)];
     const int layer =
@@ -183,6 +159,28 @@ std::vector<RawMatch> MatchKeptBlocks(
       if (point.kept) points.push_back(point.pixel - offset);
     }
   }
+  return points_by_layer;
+}
+
+// One layer's search of `object` around `points` as the occluder bank sees it.
+LayerReach ReachOfLayer(const ArchiveObject& object, int layer,
+                        const std::vector<cv::Point>& points, const cv::Size& largest_template,
+                        const DetectorOptions& options) {
+  return {object.layer_depths_mm[static_cast<std::size_t>(layer)], object.sphere.radius_mm,
+          ReachOfPoints(points, largest_template, options.coarse.point_step_px)};
+}
+
+// Scene-Patch invocation (paper §3.4): each kept block is matched only with its layer's
+// templates, only around its surviving detection points (`points_by_layer`). Blocks of one
+// layer share a search, so that no template is scored twice. Occlusion-aware, each layer's
+// search sees what lies nearer than the object can be at that layer as occluders (`occluders`,
+// empty when occlusion is ignored). `border`: the padding past the image as occluders (nullptr
+// when the region has none); a layer without occluders of its own uses it.
+std::vector<RawMatch> MatchKeptBlocks(
+    const PreparedRegion& prepared, const LayerPoints& points_by_layer,
+    const OccluderBank& occluders, const Occluders* border, const TemplateArchive& archive,
+    const ArchiveObject& object, std::span<const TemplateFacts> object_facts,
+    const cv::Size& largest_template, const DetectorOptions& options) {
   std::vector<TemplateSearch> searches;
   std::vector<std::optional<Occluders>> layer_occluders(points_by_layer.size());
   searches.reserve(points_by_layer.size());
@@ -191,15 +189,14 @@ std::vector<RawMatch> MatchKeptBlocks(
     searches.back().candidate_points = &points;
     searches.back().occluders = border;
     std::optional<Occluders>& own = layer_occluders[searches.size() - 1];
-    own = occluders.ForLayer(object.layer_depths_mm[static_cast<std::size_t>(layer)],
-                             object.sphere.radius_mm,
-                             ReachOfPoints(points, largest_template, options.coarse.point_step_px));
+    own = occluders.ForLayer(ReachOfLayer(object, layer, points, largest_template, options));
     if (own) searches.back().occluders = &*own;
   }
   // Detection points aim at the object's centre, where each template's anchor lies (the
   // projection of its sphere centre): the true centre is within half a step of a point.
   std::vector<RawMatch> matches =
       MatchTemplateGroups(prepared.scene, searches, options.match, options.coarse.point_step_px);
+  const cv::Point offset = prepared.region_px.tl();
   for (RawMatch& match : matches) {
     match.x += offset.x;
     match.y += offset.y;
@@ -437,17 +434,19 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
   // (ranking, suppression, the last candidates of a parallel loop) overlap another's work. Each
   // stage's time is the wall time of all objects together.
   stage_start = Clock::now();
-  std::set<int> bounds_mm;  // of every layer a kept block is matched with, when aware
-  for (std::size_t i = 0; scene_patch && options.occlusion == OcclusionMode::kAware &&
-                          i < objects_.size();
-       ++i) {
+  std::vector<LayerPoints> points(objects_.size());
+  std::vector<LayerReach> reaches;  // of every layer searched, for occlusion-aware matching
+  for (std::size_t i = 0; scene_patch && i < objects_.size(); ++i) {
+    points[i] = KeptPointsByLayer(result.diagnostics[i], prepared.region_px.tl());
+    if (options.occlusion != OcclusionMode::kAware) continue;
     const ArchiveObject& object = archives_[objects_[i].archive]->Object(objects_[i].obj_id);
-    for (int layer : KeptLayers(result.diagnostics[i])) {
-      bounds_mm.insert(LayerBoundMm(object, layer));
+    for (const auto& [layer, layer_points] : points[i]) {
+      reaches.push_back(
+          ReachOfLayer(object, layer, layer_points, objects_[i].largest_template, options));
     }
   }
   const OccluderBank occluders =
-      bounds_mm.empty() ? OccluderBank() : OccluderBank(prepared, bounds_mm);
+      reaches.empty() ? OccluderBank() : OccluderBank(prepared, reaches);
   tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
     const ObjectEntry& entry = objects_[i];
     const TemplateArchive& archive = *archives_[entry.archive];
@@ -457,8 +456,8 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
     if (prepared.region_px.empty()) return;  // nothing survived coarse positioning: no match
     diagnostics.matches =
         scene_patch
-            ? MatchKeptBlocks(prepared, occluders, border_occluders, archive, object, entry.facts,
-                              entry.largest_template, diagnostics, options)
+            ? MatchKeptBlocks(prepared, points[i], occluders, border_occluders, archive, object,
+                              entry.facts, entry.largest_template, options)
             : MatchEveryLayer(prepared, border_occluders, archive, object, entry.facts, options);
   });
   result.timings.match_ms = MsSince(stage_start);

@@ -61,11 +61,19 @@ int SharedBoundMm(double layer_depth_mm, double sphere_radius_mm) {
   return static_cast<int>(std::floor(bound_mm / kOccluderBoundStepMm)) * kOccluderBoundStepMm;
 }
 
-OccluderBank::OccluderBank(const PreparedRegion& prepared, const std::set<int>& bounds_mm) {
+OccluderBank::OccluderBank(const PreparedRegion& prepared, std::span<const LayerReach> layers) {
   if (prepared.depth_levels_mm.empty()) return;
   const std::vector<cv::Mat> whole_mm = WholeMillimetreDepths(prepared.depth_levels_mm);
-  const cv::Rect region(cv::Point(0, 0), whole_mm.front().size());
-  const std::vector<int> bounds(bounds_mm.begin(), bounds_mm.end());
+  whole_mm_ = whole_mm.front();
+  if (!prepared.outside_image.empty()) outside_image_ = prepared.outside_image.front();
+  std::set<int> needed_mm;
+  for (const LayerReach& layer : layers) {
+    if (!NearerWithinReach(layer).empty()) {
+      needed_mm.insert(SharedBoundMm(layer.layer_depth_mm, layer.sphere_radius_mm));
+    }
+  }
+  const cv::Rect region(cv::Point(0, 0), whole_mm_.size());
+  const std::vector<int> bounds(needed_mm.begin(), needed_mm.end());
   std::vector<std::optional<Occluders>> built(bounds.size());
   tbb::parallel_for(std::size_t{0}, bounds.size(), [&](std::size_t i) {
     std::vector<cv::Mat> masks = OccludersNearerThan(whole_mm, bounds[i], region);
@@ -78,29 +86,35 @@ OccluderBank::OccluderBank(const PreparedRegion& prepared, const std::set<int>& 
   for (std::size_t i = 0; i < bounds.size(); ++i) {
     by_bound_mm_.emplace(bounds[i], std::move(built[i]));
   }
-  whole_mm_ = whole_mm.front();
-  if (!prepared.outside_image.empty()) outside_image_ = prepared.outside_image.front();
-}
-
-std::optional<Occluders> OccluderBank::ForLayer(double layer_depth_mm, double sphere_radius_mm,
-                                                const cv::Rect& reach_px) const {
-  const Occluders* shared = Find(SharedBoundMm(layer_depth_mm, sphere_radius_mm));
-  if (shared == nullptr) return std::nullopt;
-  // Only pixels within reach are ever looked at.
-  cv::Mat mask = cv::Mat::zeros(whole_mm_.size(), CV_8UC1);
-  const cv::Rect reach = reach_px & cv::Rect(cv::Point(0, 0), whole_mm_.size());
-  if (!reach.empty()) {
-    cv::Mat reached = mask(reach);
-    const double last_mm = std::ceil(NearestSurfaceMm(layer_depth_mm, sphere_radius_mm)) - 1.0;
-    cv::inRange(whole_mm_(reach), 1.0, last_mm, reached);
-    if (!outside_image_.empty()) reached |= outside_image_(reach);
-  }
-  return WithLevelZeroMask(*shared, std::move(mask));
 }
 
 const Occluders* OccluderBank::Find(int bound_mm) const {
   const auto found = by_bound_mm_.find(bound_mm);
   return found != by_bound_mm_.end() && found->second ? &*found->second : nullptr;
+}
+
+cv::Mat OccluderBank::NearerWithinReach(const LayerReach& layer) const {
+  const cv::Rect reach = layer.reach_px & cv::Rect(cv::Point(0, 0), whole_mm_.size());
+  if (reach.empty()) return {};
+  cv::Mat mask = cv::Mat::zeros(whole_mm_.size(), CV_8UC1);
+  cv::Mat reached = mask(reach);
+  const double last_mm =
+      std::ceil(NearestSurfaceMm(layer.layer_depth_mm, layer.sphere_radius_mm)) - 1.0;
+  cv::inRange(whole_mm_(reach), 1.0, last_mm, reached);
+  return cv::countNonZero(reached) > 0 ? mask : cv::Mat();
+}
+
+std::optional<Occluders> OccluderBank::ForLayer(const LayerReach& layer) const {
+  const Occluders* shared = Find(SharedBoundMm(layer.layer_depth_mm, layer.sphere_radius_mm));
+  if (shared == nullptr) return std::nullopt;
+  cv::Mat mask = NearerWithinReach(layer);
+  if (mask.empty()) return std::nullopt;
+  if (!outside_image_.empty()) {
+    const cv::Rect reach = layer.reach_px & cv::Rect(cv::Point(0, 0), whole_mm_.size());
+    cv::Mat reached = mask(reach);
+    reached |= outside_image_(reach);
+  }
+  return WithLevelZeroMask(*shared, std::move(mask));
 }
 
 }  // namespace layermod

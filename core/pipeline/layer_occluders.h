@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 #include <optional>
 #include <set>
+#include <span>
 #include <vector>
 
 #include "match/occluders.h"
@@ -39,27 +40,40 @@ std::vector<cv::Mat> OccludersNearerThan(const std::vector<cv::Mat>& depth_level
 inline constexpr int kOccluderBoundStepMm = 100;
 int SharedBoundMm(double layer_depth_mm, double sphere_radius_mm);  // <= 0: nothing is nearer
 
-// The occluders of one frame's Scene-Patch searches, one per shared bound, each over the whole
-// prepared region with the padding past the image's border hidden as well.
+// One layer's search as occluders concern it: the layer's depth, the part's sphere radius, and
+// where the search's templates can put features (level-0 region pixels).
+struct LayerReach {
+  double layer_depth_mm = 0.0;
+  double sphere_radius_mm = 0.0;
+  cv::Rect reach_px;
+};
+
+// The occluders of one frame's Scene-Patch searches: one shared entry per SharedBoundMm, each
+// ranked on one copy of the scene for the whole prepared region (the padding past the image's
+// border hidden as well).
 class OccluderBank {
  public:
   OccluderBank() = default;  // nothing is an occluder (occlusion ignored)
-  // Built side by side for `bounds_mm` (SharedBoundMm values).
-  OccluderBank(const PreparedRegion& prepared, const std::set<int>& bounds_mm);
+  // The entries the searches `layers` need: those of the layers with something nearer than their
+  // own bound (NearestSurfaceMm) within their reach; built side by side.
+  OccluderBank(const PreparedRegion& prepared, std::span<const LayerReach> layers);
 
   // nullptr where nothing lies nearer than the bound, or for a bound not built.
   const Occluders* Find(int bound_mm) const;
 
-  // The occluders of one layer's search, whose templates lie within `reach_px` (level-0 region
-  // pixels): ranked on the shared entry of the layer's SharedBoundMm, while at level 0 the
-  // pixels nearer than the layer's own bound (NearestSurfaceMm) and the padding are counted out
-  // (within the reach; the level-0 mask is empty past it). nullopt where the shared entry is.
-  std::optional<Occluders> ForLayer(double layer_depth_mm, double sphere_radius_mm,
-                                    const cv::Rect& reach_px) const;
+  // The occluders of one layer's search: ranked on the shared entry of its SharedBoundMm, while
+  // at level 0 the pixels nearer than its own bound and the padding are counted out (within the
+  // reach; the level-0 mask is empty past it). nullopt where nothing lies nearer than its own
+  // bound within its reach (its templates then read the scene as it is) or the entry is missing.
+  std::optional<Occluders> ForLayer(const LayerReach& layer) const;
 
  private:
+  // CV_8UC1 of the level-0 size, non-zero within the reach where the depth is nearer than the
+  // layer's own bound; empty when no pixel is.
+  cv::Mat NearerWithinReach(const LayerReach& layer) const;
+
   std::map<int, std::optional<Occluders>> by_bound_mm_;
-  cv::Mat whole_mm_;  // the region's level-0 depth in whole millimetres
+  cv::Mat whole_mm_;       // the region's level-0 depth in whole millimetres
   cv::Mat outside_image_;  // level 0 of PreparedRegion::outside_image (empty: none)
 };
 

@@ -36,14 +36,25 @@ PreparedRegion FrameWithABoxInFront(int padding_px) {
                             SimdPath::kAuto, padding_px);
 }
 
+// A layer of a part of radius 50 mm searched over `reach`: at 600 mm its bound is 513 mm (shared
+// 500), at 900 mm 807 mm (shared 800), at 1200 mm 1101 mm (shared 1100).
+LayerReach Layer(double depth_mm, const cv::Rect& reach) { return {depth_mm, 50.0, reach}; }
+
+cv::Rect Everywhere(const PreparedRegion& region) {
+  return cv::Rect(cv::Point(0, 0), region.depth_levels_mm.front().size());
+}
+
 TEST(OccluderBankTest, MarksWhatLiesNearerThanEachBoundAndNothingElse) {
   const PreparedRegion region = FrameWithABoxInFront(0);
   ASSERT_TRUE(region.outside_image.empty());
-  const OccluderBank bank(region, {500, 800, 1050});
-  EXPECT_EQ(bank.Find(500), nullptr);  // nothing is nearer than 500 mm
-  EXPECT_EQ(bank.Find(650), nullptr);  // not built
+  const std::vector<LayerReach> layers = {Layer(600.0, Everywhere(region)),
+                                          Layer(900.0, Everywhere(region)),
+                                          Layer(1200.0, Everywhere(region))};
+  const OccluderBank bank(region, layers);
+  EXPECT_EQ(bank.Find(500), nullptr);  // nothing is nearer than 513 mm
+  EXPECT_FALSE(bank.ForLayer(layers[0]).has_value());
   const Occluders* box_only = bank.Find(800);
-  const Occluders* everything = bank.Find(1050);
+  const Occluders* everything = bank.Find(1100);
   ASSERT_NE(box_only, nullptr);
   ASSERT_NE(everything, nullptr);
   ASSERT_EQ(box_only->masks.size(), static_cast<std::size_t>(region.scene.LevelCount()));
@@ -58,15 +69,18 @@ TEST(OccluderBankTest, MarksWhatLiesNearerThanEachBoundAndNothingElse) {
 TEST(OccluderBankTest, HidesThePaddingPastTheImageAlongWithTheOccluders) {
   const PreparedRegion region = FrameWithABoxInFront(40);
   ASSERT_FALSE(region.outside_image.empty());
-  const OccluderBank bank(region, {800});
-  const Occluders* occluders = bank.Find(800);
-  ASSERT_NE(occluders, nullptr);
-  const cv::Mat& mask = occluders->masks.front();
+  const LayerReach layer = Layer(900.0, Everywhere(region));
+  const OccluderBank bank(region, std::vector<LayerReach>{layer});
   const cv::Mat& outside = region.outside_image.front();
-  EXPECT_EQ(cv::countNonZero(mask), cv::countNonZero(outside) + 120 * 80);
-  cv::Mat outside_kept;
-  cv::bitwise_and(mask, outside, outside_kept);
-  EXPECT_EQ(cv::countNonZero(outside_kept), cv::countNonZero(outside));
+  const std::optional<Occluders> own = bank.ForLayer(layer);
+  ASSERT_TRUE(own.has_value());
+  ASSERT_NE(bank.Find(800), nullptr);
+  for (const cv::Mat& mask : {bank.Find(800)->masks.front(), own->masks.front()}) {
+    EXPECT_EQ(cv::countNonZero(mask), cv::countNonZero(outside) + 120 * 80);
+    cv::Mat outside_kept;
+    cv::bitwise_and(mask, outside, outside_kept);
+    EXPECT_EQ(cv::countNonZero(outside_kept), cv::countNonZero(outside));
+  }
 }
 
 TEST(OccluderBankTest, ALayerCountsOutWhatLiesNearerThanItsOwnBoundWithinItsReach) {
@@ -74,27 +88,35 @@ TEST(OccluderBankTest, ALayerCountsOutWhatLiesNearerThanItsOwnBoundWithinItsReac
   const cv::Rect near_box = cv::Rect(200, 160, 120, 80) - region.region_px.tl();
   const cv::Rect second_box = cv::Rect(400, 300, 60, 50) - region.region_px.tl();
   region.depth_levels_mm.front()(second_box).setTo(803.0f);  // nearer than 807, not than 800
-  // A layer at 900 mm of a part of radius 50 mm: bound 0.98 x 900 - 75 = 807 mm, shared 800.
-  ASSERT_EQ(SharedBoundMm(900.0, 50.0), 800);
-  const OccluderBank bank(region, {800});
+  const LayerReach whole = Layer(900.0, Everywhere(region));
+  const LayerReach near_only =
+      Layer(900.0, cv::Rect(near_box.tl() - cv::Point(10, 10), near_box.br() + cv::Point(10, 10)));
+  const LayerReach clear = Layer(900.0, cv::Rect(500, 20, 80, 60));  // only background there
+  const OccluderBank bank(region, std::vector<LayerReach>{whole});
   const Occluders* shared = bank.Find(800);
   ASSERT_NE(shared, nullptr);
   EXPECT_EQ(cv::countNonZero(shared->masks.front()), near_box.area());
 
-  const std::optional<Occluders> layer =
-      bank.ForLayer(900.0, 50.0, cv::Rect(cv::Point(0, 0), region.depth_levels_mm[0].size()));
+  const std::optional<Occluders> layer = bank.ForLayer(whole);
   ASSERT_TRUE(layer.has_value());
   EXPECT_EQ(layer->ranked, shared->ranked);  // ranked on the shared copy, none made
   const cv::Mat& mask = layer->masks.front();
   EXPECT_EQ(cv::countNonZero(mask), near_box.area() + second_box.area());
   EXPECT_EQ(cv::countNonZero(mask(second_box)), second_box.area());
 
-  const cv::Rect reach(near_box.tl() - cv::Point(10, 10), near_box.br() + cv::Point(10, 10));
-  const std::optional<Occluders> near_only = bank.ForLayer(900.0, 50.0, reach);
-  ASSERT_TRUE(near_only.has_value());
-  EXPECT_EQ(cv::countNonZero(near_only->masks.front()), near_box.area());
+  const std::optional<Occluders> near_layer = bank.ForLayer(near_only);
+  ASSERT_TRUE(near_layer.has_value());
+  EXPECT_EQ(cv::countNonZero(near_layer->masks.front()), near_box.area());
+  EXPECT_FALSE(bank.ForLayer(clear).has_value());  // nothing in front within its reach
+  EXPECT_FALSE(bank.ForLayer(Layer(1200.0, near_only.reach_px)).has_value());  // 1100: not built
+}
 
-  EXPECT_FALSE(bank.ForLayer(600.0, 50.0, reach).has_value());  // shared bound 500: not built
+TEST(OccluderBankTest, BuildsOnlyTheEntriesOfLayersWithSomethingInFront) {
+  const PreparedRegion region = FrameWithABoxInFront(0);
+  const LayerReach clear = Layer(900.0, cv::Rect(500, 20, 80, 60));
+  const OccluderBank bank(region, std::vector<LayerReach>{clear});
+  EXPECT_EQ(bank.Find(800), nullptr);
+  EXPECT_FALSE(bank.ForLayer(clear).has_value());
 }
 
 TEST(OccluderBankTest, WithoutDepthNothingIsAnOccluder) {
@@ -102,8 +124,10 @@ TEST(OccluderBankTest, WithoutDepthNothingIsAnOccluder) {
   const PreparedRegion region =
       PrepareSceneRegion(color, cv::Mat(), test::RoundedKinectCamera(), FeatureOptions(),
                          cv::Rect(0, 0, 160, 120));
-  const OccluderBank bank(region, {800});
+  const LayerReach layer = Layer(900.0, cv::Rect(0, 0, 160, 120));
+  const OccluderBank bank(region, std::vector<LayerReach>{layer});
   EXPECT_EQ(bank.Find(800), nullptr);
+  EXPECT_FALSE(bank.ForLayer(layer).has_value());
 }
 
 }  // namespace
