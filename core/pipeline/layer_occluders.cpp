@@ -66,10 +66,13 @@ OccluderBank::OccluderBank(const PreparedRegion& prepared, std::span<const Layer
   const std::vector<cv::Mat> whole_mm = WholeMillimetreDepths(prepared.depth_levels_mm);
   whole_mm_ = whole_mm.front();
   if (!prepared.outside_image.empty()) outside_image_ = prepared.outside_image.front();
+  std::vector<char> in_front(layers.size(), 0);
+  tbb::parallel_for(std::size_t{0}, layers.size(),
+                    [&](std::size_t i) { in_front[i] = AnyNearerWithinReach(layers[i]); });
   std::set<int> needed_mm;
-  for (const LayerReach& layer : layers) {
-    if (!NearerWithinReach(layer).empty()) {
-      needed_mm.insert(SharedBoundMm(layer.layer_depth_mm, layer.sphere_radius_mm));
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (in_front[i]) {
+      needed_mm.insert(SharedBoundMm(layers[i].layer_depth_mm, layers[i].sphere_radius_mm));
     }
   }
   const cv::Rect region(cv::Point(0, 0), whole_mm_.size());
@@ -93,14 +96,29 @@ const Occluders* OccluderBank::Find(int bound_mm) const {
   return found != by_bound_mm_.end() && found->second ? &*found->second : nullptr;
 }
 
+namespace {
+
+// The last whole millimetre nearer than the layer's own bound (0 is no depth).
+double LastNearerMm(const LayerReach& layer) {
+  return std::ceil(NearestSurfaceMm(layer.layer_depth_mm, layer.sphere_radius_mm)) - 1.0;
+}
+
+}  // namespace
+
+bool OccluderBank::AnyNearerWithinReach(const LayerReach& layer) const {
+  const cv::Rect reach = layer.reach_px & cv::Rect(cv::Point(0, 0), whole_mm_.size());
+  if (reach.empty()) return false;
+  cv::Mat nearer;
+  cv::inRange(whole_mm_(reach), 1.0, LastNearerMm(layer), nearer);
+  return cv::countNonZero(nearer) > 0;
+}
+
 cv::Mat OccluderBank::NearerWithinReach(const LayerReach& layer) const {
   const cv::Rect reach = layer.reach_px & cv::Rect(cv::Point(0, 0), whole_mm_.size());
   if (reach.empty()) return {};
   cv::Mat mask = cv::Mat::zeros(whole_mm_.size(), CV_8UC1);
   cv::Mat reached = mask(reach);
-  const double last_mm =
-      std::ceil(NearestSurfaceMm(layer.layer_depth_mm, layer.sphere_radius_mm)) - 1.0;
-  cv::inRange(whole_mm_(reach), 1.0, last_mm, reached);
+  cv::inRange(whole_mm_(reach), 1.0, LastNearerMm(layer), reached);
   return cv::countNonZero(reached) > 0 ? mask : cv::Mat();
 }
 

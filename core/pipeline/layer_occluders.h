@@ -68,6 +68,8 @@ class OccluderBank {
   std::optional<Occluders> ForLayer(const LayerReach& layer) const;
 
  private:
+  // Whether some pixel within the reach lies nearer than the layer's own bound.
+  bool AnyNearerWithinReach(const LayerReach& layer) const;
   // CV_8UC1 of the level-0 size, non-zero within the reach where the depth is nearer than the
   // layer's own bound; empty when no pixel is.
   cv::Mat NearerWithinReach(const LayerReach& layer) const;
