@@ -349,9 +349,9 @@ std::optional<Candidate> RefineRankedHit(const TemplateHits& source,
   VisibleScore score{summaries.front().usable_features, 0, refined->sum};
   const cv::Rect box(refined->position_px, summaries.front().extent);
   if (source.occluders != nullptr && (box & source.occluders->clear_px) != box) {
-    score = ScoreVisibleFeatures(source.record->levels[0], scene.Level(0),
-                                 source.occluders->masks.front(), refined->position_px,
-                                 refined->sum);
+    score =
+        ScoreVisibleFeatures(source.record->levels[0], scene.Level(0),
+                             source.occluders->masks.front(), refined->position_px, refined->sum);
     if (score.Visible() < options.min_visible_share * static_cast<float>(score.features)) {
       return std::nullopt;
     }

@@ -176,11 +176,13 @@ LayerReach ReachOfLayer(const ArchiveObject& object, int layer,
 // search sees what lies nearer than the object can be at that layer as occluders (`occluders`,
 // empty when occlusion is ignored). `border`: the padding past the image as occluders (nullptr
 // when the region has none); a layer without occluders of its own uses it.
-std::vector<RawMatch> MatchKeptBlocks(
-    const PreparedRegion& prepared, const LayerPoints& points_by_layer,
-    const OccluderBank& occluders, const Occluders* border, const TemplateArchive& archive,
-    const ArchiveObject& object, std::span<const TemplateFacts> object_facts,
-    const cv::Size& largest_template, const DetectorOptions& options) {
+std::vector<RawMatch> MatchKeptBlocks(const PreparedRegion& prepared,
+                                      const LayerPoints& points_by_layer,
+                                      const OccluderBank& occluders, const Occluders* border,
+                                      const TemplateArchive& archive, const ArchiveObject& object,
+                                      std::span<const TemplateFacts> object_facts,
+                                      const cv::Size& largest_template,
+                                      const DetectorOptions& options) {
   std::vector<TemplateSearch> searches;
   std::vector<std::optional<Occluders>> layer_occluders(points_by_layer.size());
   searches.reserve(points_by_layer.size());
@@ -445,8 +447,7 @@ DetectionResult Detector::Detect(const Capture& capture, const DetectorOptions& 
           ReachOfLayer(object, layer, layer_points, objects_[i].largest_template, options));
     }
   }
-  const OccluderBank occluders =
-      reaches.empty() ? OccluderBank() : OccluderBank(prepared, reaches);
+  const OccluderBank occluders = reaches.empty() ? OccluderBank() : OccluderBank(prepared, reaches);
   tbb::parallel_for(std::size_t{0}, objects_.size(), [&](std::size_t i) {
     const ObjectEntry& entry = objects_[i];
     const TemplateArchive& archive = *archives_[entry.archive];

@@ -39,7 +39,7 @@ struct DetectorOptions {
   CoarsePositioningOptions coarse;
   MatchOptions match;
   OcclusionMode occlusion = OcclusionMode::kAware;  // see match/occluders.h
-  int max_instances = 1;                             // detections kept per object
+  int max_instances = 1;                            // detections kept per object
   int pose_candidates = 12;  // best raw matches per object that get a pose and a verification
   // Detections less confident (pipeline/confidence.h) are not reported. 0.8 keeps precision at
   // or above 98 % with at most 0.2 % of absent parts detected on the sets in docs/RESULTS.md.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "pipeline/layer_occluders.h"
 
-#include <opencv2/core.hpp>
 #include <tbb/parallel_for.h>
+#include <opencv2/core.hpp>
 
 #include <cmath>
 

@@ -30,10 +30,10 @@ PreparedRegion FrameWithABoxInFront(int padding_px) {
   cv::GaussianBlur(color, color, cv::Size(0, 0), 3.0);
   cv::Mat depth_mm(480, 640, CV_32F, cv::Scalar(1000.0f));
   depth_mm(cv::Rect(200, 160, 120, 80)).setTo(600.0f);
-  return PrepareSceneRegion(color, depth_mm, test::RoundedKinectCamera(), FeatureOptions(),
-                            cv::Rect(-padding_px, -padding_px, 640 + 2 * padding_px,
-                                     480 + 2 * padding_px),
-                            SimdPath::kAuto, padding_px);
+  return PrepareSceneRegion(
+      color, depth_mm, test::RoundedKinectCamera(), FeatureOptions(),
+      cv::Rect(-padding_px, -padding_px, 640 + 2 * padding_px, 480 + 2 * padding_px),
+      SimdPath::kAuto, padding_px);
 }
 
 // A layer of a part of radius 50 mm searched over `reach`: at 600 mm its bound is 513 mm (shared
@@ -121,9 +121,8 @@ TEST(OccluderBankTest, BuildsOnlyTheEntriesOfLayersWithSomethingInFront) {
 
 TEST(OccluderBankTest, WithoutDepthNothingIsAnOccluder) {
   cv::Mat color(120, 160, CV_8UC3, cv::Scalar(90, 120, 150));
-  const PreparedRegion region =
-      PrepareSceneRegion(color, cv::Mat(), test::RoundedKinectCamera(), FeatureOptions(),
-                         cv::Rect(0, 0, 160, 120));
+  const PreparedRegion region = PrepareSceneRegion(color, cv::Mat(), test::RoundedKinectCamera(),
+                                                   FeatureOptions(), cv::Rect(0, 0, 160, 120));
   const LayerReach layer = Layer(900.0, cv::Rect(0, 0, 160, 120));
   const OccluderBank bank(region, std::vector<LayerReach>{layer});
   EXPECT_EQ(bank.Find(800), nullptr);
