@@ -188,10 +188,12 @@ class DetectionPanelTest : public QObject {
     DetectionOptionsForm loaded;
     QVERIFY(loaded.LoadProfile(path));
     QVERIFY2(SameOptions(loaded.options(), options), qPrintable(differences_));
-    // Settings are keyed by the table's keys.
+    // Settings are keyed by the table's keys, and hold only what differs from the defaults.
     form.SaveSettings();
     QCOMPARE(QSettings().value("detection/icp_huber").toString(), QStringLiteral("7.5"));
     QCOMPARE(QSettings().value("detection/mode").toString(), QStringLiteral("\"exhaustive\""));
+    QVERIFY(!QSettings().contains("detection/occlusion"));
+    QVERIFY(!QSettings().contains("detection/min_confidence"));
     DetectionOptionsForm restored;
     restored.RestoreSettings();
     QVERIFY2(SameOptions(restored.options(), options), qPrintable(differences_));

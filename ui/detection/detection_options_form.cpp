@@ -185,11 +185,18 @@ void DetectionOptionsForm::SetOptions(const DetectorOptions& options) {
 }
 
 void DetectionOptionsForm::SaveSettings() const {
+  // Only what differs from the defaults: a field the user never changed follows the defaults of
+  // a later studio (as occlusion-aware matching became one).
   QSettings settings;
   const nlohmann::json json = DetectorOptionsToJson(options());
+  const nlohmann::json defaults = DetectorOptionsToJson(DetectorOptions{});
   for (const auto& [key, value] : json.items()) {
-    settings.setValue(QStringLiteral("detection/") + QString::fromStdString(key),
-                      QString::fromStdString(value.dump()));
+    const QString settings_key = QStringLiteral("detection/") + QString::fromStdString(key);
+    if (defaults.contains(key) && defaults.at(key) == value) {
+      settings.remove(settings_key);
+    } else {
+      settings.setValue(settings_key, QString::fromStdString(value.dump()));
+    }
   }
 }
 

@@ -23,7 +23,7 @@ class DetectionOptionsForm : public QWidget {
 
   DetectorOptions options() const;
   void SetOptions(const DetectorOptions& options);
-  void SaveSettings() const;
+  void SaveSettings() const;  // QSettings "detection/…": the fields that differ from the defaults
   void RestoreSettings();
   // Detector profiles (JSON, as `layermod detect --detector-profile`); an error box names the
   // file when it cannot be read or written.
