@@ -21,17 +21,6 @@ namespace layermod {
 // than its centre. A margin of 2 % of the depth covers the sensor's noise.
 double NearestSurfaceMm(double layer_depth_mm, double sphere_radius_mm);
 
-// PreparedRegion::depth_levels_mm in whole millimetres (CV_16U; rounded, negative and NaN
-// become 0 = no depth), once per frame for all the comparisons below.
-std::vector<cv::Mat> WholeMillimetreDepths(const std::vector<cv::Mat>& depth_levels_mm);
-
-// Per pyramid level of `depth_levels_mm` (WholeMillimetreDepths), CV_8UC1, non-zero where the
-// depth is valid and nearer than `nearest_surface_mm`, looked at only within `reach_px`
-// (level-0 region pixels: where the templates of a search can put features); empty when no
-// pixel is (or without depth).
-std::vector<cv::Mat> OccludersNearerThan(const std::vector<cv::Mat>& depth_levels_mm,
-                                         double nearest_surface_mm, const cv::Rect& reach_px);
-
 // Layers share occluders: a layer's bound (NearestSurfaceMm) is rounded down to a multiple of
 // kOccluderBoundStepMm, so that one ranked copy of the scene (match/occluders.h) serves every
 // layer, of every object, whose bound rounds the same. Rounding down leaves out at most that
@@ -68,15 +57,19 @@ class OccluderBank {
   std::optional<Occluders> ForLayer(const LayerReach& layer) const;
 
  private:
-  // Whether some pixel within the reach lies nearer than the layer's own bound.
-  bool AnyNearerWithinReach(const LayerReach& layer) const;
-  // CV_8UC1 of the level-0 size, non-zero within the reach where the depth is nearer than the
-  // layer's own bound; empty when no pixel is.
-  cv::Mat NearerWithinReach(const LayerReach& layer) const;
+  // Whether a pixel nearer than the layer's own bound may lie within its reach: judged on the
+  // cells of nearest_per_cell_mm_ the reach touches, so it may say yes for a pixel just past
+  // the reach (a shared copy is then built that this layer does not use), never no for one in it.
+  bool MayHaveNearerWithinReach(const LayerReach& layer) const;
+  // CV_8UC1 of the level-0 size: within the reach, the pixels nearer than the layer's own bound
+  // and the padding past the image; zero past the reach. Empty when no pixel within the reach
+  // is nearer.
+  cv::Mat LevelZeroMask(const LayerReach& layer) const;
 
   std::map<int, std::optional<Occluders>> by_bound_mm_;
-  cv::Mat whole_mm_;       // the region's level-0 depth in whole millimetres
-  cv::Mat outside_image_;  // level 0 of PreparedRegion::outside_image (empty: none)
+  cv::Mat whole_mm_;             // the region's level-0 depth in whole millimetres (0: none)
+  cv::Mat nearest_per_cell_mm_;  // whole_mm_'s nearest valid depth per cell (65535: none)
+  cv::Mat outside_image_;        // level 0 of PreparedRegion::outside_image (empty: none)
 };
 
 }  // namespace layermod
